@@ -1,0 +1,124 @@
+#include "app/core/json_output.h"
+
+#include "app/core/value_format.h"
+#include "physics/inertia.h"
+
+#include <QJsonArray>
+
+namespace rbw {
+
+QJsonObject diagnosticsToJson(const Diagnostics& d)
+{
+    return QJsonObject{
+        {"kinetic_energy_translational", d.kineticTranslational},
+        {"kinetic_energy_rotational", d.kineticRotational},
+        {"kinetic_energy", d.kinetic},
+        {"potential_energy", d.potential},
+        {"total_energy", d.total},
+        {"linear_momentum", jsonVec3(d.P_W)},
+        {"angular_momentum_origin", jsonVec3(d.L_O_W)},
+    };
+}
+
+namespace {
+
+QJsonValue bodyName(const SceneDef& scene, int body)
+{
+    if (body < 0) {
+        return QJsonValue::Null;
+    }
+    return QString::fromStdString(scene.bodies[body].name);
+}
+
+} // namespace
+
+QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene)
+{
+    QJsonArray quantities;
+    for (const TraceEntry& e : trace.entries) {
+        QJsonObject q{
+            {"id", e.info->id},
+            {"stage", stageName(e.info->stage)},
+            {"body", bodyName(scene, e.body)},
+            {"symbol", e.info->symbol},
+            {"formula", e.info->formula},
+            {"frame", frameName(e.info->frame)},
+            {"unit", QString::fromUtf8(e.info->unit)},
+            {"kind", valueKind(e.value)},
+            {"value", jsonValue(e.value)},
+        };
+        if (e.index >= 0) {
+            q.insert("index", e.index);
+        }
+        quantities.append(q);
+    }
+    return QJsonObject{
+        {"step", static_cast<qint64>(trace.step)},
+        {"time", trace.time},
+        {"quantities", quantities},
+        {"diagnostics", diagnosticsToJson(trace.diagnostics)},
+    };
+}
+
+QJsonObject runToJson(const World& world, const std::vector<StepTrace>& traces, const QString& sceneFile)
+{
+    const SceneDef& scene = world.scene();
+    QJsonArray bodies;
+    for (int b = 0; b < static_cast<int>(scene.bodies.size()); ++b) {
+        const BodyState& s = world.states()[b];
+        bodies.append(QJsonObject{
+            {"name", QString::fromStdString(scene.bodies[b].name)},
+            {"fixed", scene.bodies[b].fixed},
+            {"position", jsonVec3(s.x_W)},
+            {"orientation", jsonQuat(s.q_WB)},
+            {"linear_velocity", jsonVec3(s.v_W)},
+            {"angular_velocity", jsonVec3(s.omega_W)},
+            {"linear_momentum", jsonVec3(linearMomentum(world.massProperties()[b], s))},
+            {"angular_momentum", jsonVec3(s.L_W)},
+            {"inverse_inertia_world", jsonMat3(s.Iinv_W)},
+        });
+    }
+    QJsonArray probes;
+    for (int i = 0; i < static_cast<int>(scene.probes.size()); ++i) {
+        const ProbeReading r = world.probe(i);
+        probes.append(QJsonObject{
+            {"body", bodyName(scene, r.body)},
+            {"initial_point", jsonVec3(scene.probes[i].p0_W)},
+            {"point", jsonVec3(r.p_W)},
+            {"velocity", jsonVec3(r.v_W)},
+        });
+    }
+    QJsonArray traceArray;
+    for (const StepTrace& t : traces) {
+        traceArray.append(traceToJson(t, scene));
+    }
+    return QJsonObject{
+        {"scene", QString::fromStdString(scene.name)},
+        {"file", sceneFile},
+        {"integrator", QString::fromLatin1(world.integrator().name())},
+        {"inertia_convention",
+         scene.inertiaConvention == InertiaConvention::Standard ? "standard" : "course-template"},
+        {"dt", scene.dt},
+        {"steps", static_cast<qint64>(world.stepIndex())},
+        {"time", world.time()},
+        {"status", "ok"},
+        {"bodies", bodies},
+        {"probes", probes},
+        {"diagnostics", diagnosticsToJson(world.diagnostics())},
+        {"trace", traceArray},
+    };
+}
+
+QJsonObject blowUpToJson(const StepStatus& status, const QString& sceneFile)
+{
+    return QJsonObject{
+        {"file", sceneFile},
+        {"status", "blow-up"},
+        {"step", static_cast<qint64>(status.step)},
+        {"body", QString::fromStdString(status.bodyName)},
+        {"quantity", QString::fromStdString(status.quantity)},
+        {"message", QString::fromStdString(status.message)},
+    };
+}
+
+} // namespace rbw

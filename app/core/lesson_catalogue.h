@@ -1,0 +1,26 @@
+// The lessons: one folder each under lessons/, holding scene.json (whose "name" and
+// "description" give the title and the one-line summary) and lesson.md (what to
+// compute by hand and what to notice). Folders are listed in name order, so the
+// number prefix ("01-one-step") fixes the order.
+#pragma once
+
+#include <QString>
+#include <QList>
+
+namespace rbw {
+
+struct Lesson {
+    QString id;            // folder name, e.g. "01-one-step"
+    QString title;         // scene "name"
+    QString description;   // scene "description"
+    QString scenePath;
+    QString textPath;      // lesson.md, may not exist
+};
+
+// $RBW_LESSONS_DIR if set, else lessons/ beside or above the executable, else the
+// source tree's lessons/.
+QString lessonsDirectory();
+
+QList<Lesson> lessonCatalogue(const QString& directory = lessonsDirectory());
+
+} // namespace rbw

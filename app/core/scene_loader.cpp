@@ -1,0 +1,373 @@
+#include "app/core/scene_loader.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonParseError>
+
+#include <cmath>
+#include <numbers>
+
+namespace rbw {
+namespace {
+
+// Thrown inside the loader only; loadSceneFile() turns it into an error line.
+struct FieldError {
+    QString path;
+    QString reason;
+};
+
+QString join(const QString& path, const QString& key)
+{
+    return path.isEmpty() ? key : path + '.' + key;
+}
+
+QString typeName(const QJsonValue& v)
+{
+    switch (v.type()) {
+    case QJsonValue::Null: return QStringLiteral("null");
+    case QJsonValue::Bool: return QStringLiteral("a boolean");
+    case QJsonValue::Double: return QStringLiteral("a number");
+    case QJsonValue::String: return QStringLiteral("a string");
+    case QJsonValue::Array: return QStringLiteral("an array");
+    case QJsonValue::Object: return QStringLiteral("an object");
+    case QJsonValue::Undefined: return QStringLiteral("nothing");
+    }
+    return QStringLiteral("?");
+}
+
+// Levenshtein distance, for "did you mean" on unknown keys.
+int editDistance(const QString& a, const QString& b)
+{
+    std::vector<int> prev(b.size() + 1), cur(b.size() + 1);
+    for (int j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (int i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (int j = 1; j <= b.size(); ++j) {
+            const int subst = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, subst});
+        }
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+// Unknown keys are refused, so a typo is caught instead of silently ignored.
+void checkKeys(const QJsonObject& o, const QString& path, const QStringList& allowed)
+{
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        if (allowed.contains(it.key())) {
+            continue;
+        }
+        QString best;
+        int bestDistance = 3;
+        for (const QString& k : allowed) {
+            const int d = editDistance(it.key(), k);
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = k;
+            }
+        }
+        QString reason = QStringLiteral("unknown key");
+        if (!best.isEmpty()) {
+            reason += QStringLiteral(" (did you mean \"%1\"?)").arg(best);
+        } else {
+            reason += QStringLiteral(" (allowed: %1)").arg(allowed.join(QStringLiteral(", ")));
+        }
+        throw FieldError{join(path, it.key()), reason};
+    }
+}
+
+QJsonValue require(const QJsonObject& o, const QString& path, const QString& key)
+{
+    if (!o.contains(key)) {
+        throw FieldError{join(path, key), QStringLiteral("required field is missing")};
+    }
+    return o.value(key);
+}
+
+double toNumber(const QJsonValue& v, const QString& path)
+{
+    if (!v.isDouble()) {
+        throw FieldError{path, QStringLiteral("must be a number, got %1").arg(typeName(v))};
+    }
+    const double x = v.toDouble();
+    if (!std::isfinite(x)) {
+        throw FieldError{path, QStringLiteral("must be finite, got %1").arg(x)};
+    }
+    return x;
+}
+
+long toInteger(const QJsonValue& v, const QString& path)
+{
+    const double x = toNumber(v, path);
+    if (x != std::floor(x) || std::abs(x) > 9.0e15) {
+        throw FieldError{path, QStringLiteral("must be a whole number, got %1").arg(x)};
+    }
+    return static_cast<long>(x);
+}
+
+Vec3 toVec3(const QJsonValue& v, const QString& path)
+{
+    if (!v.isArray() || v.toArray().size() != 3) {
+        throw FieldError{path, QStringLiteral("must be an array of 3 numbers, got %1")
+                                   .arg(v.isArray() ? QStringLiteral("%1 elements").arg(v.toArray().size())
+                                                    : typeName(v))};
+    }
+    const QJsonArray a = v.toArray();
+    return Vec3(toNumber(a[0], path + "[0]"), toNumber(a[1], path + "[1]"),
+                toNumber(a[2], path + "[2]"));
+}
+
+Vec3 vec3Or(const QJsonObject& o, const QString& path, const QString& key, const Vec3& fallback)
+{
+    return o.contains(key) ? toVec3(o.value(key), join(path, key)) : fallback;
+}
+
+QString toString(const QJsonValue& v, const QString& path)
+{
+    if (!v.isString()) {
+        throw FieldError{path, QStringLiteral("must be a string, got %1").arg(typeName(v))};
+    }
+    return v.toString();
+}
+
+bool toBool(const QJsonValue& v, const QString& path)
+{
+    if (!v.isBool()) {
+        throw FieldError{path, QStringLiteral("must be true or false, got %1").arg(typeName(v))};
+    }
+    return v.toBool();
+}
+
+QJsonObject toObject(const QJsonValue& v, const QString& path)
+{
+    if (!v.isObject()) {
+        throw FieldError{path, QStringLiteral("must be an object, got %1").arg(typeName(v))};
+    }
+    return v.toObject();
+}
+
+QJsonArray toArray(const QJsonValue& v, const QString& path)
+{
+    if (!v.isArray()) {
+        throw FieldError{path, QStringLiteral("must be an array, got %1").arg(typeName(v))};
+    }
+    return v.toArray();
+}
+
+// { "axis": [x,y,z], "degrees": d } | { "axis": [...], "radians": a } | { "quaternion": [w,x,y,z] }
+Quat toOrientation(const QJsonValue& v, const QString& path)
+{
+    const QJsonObject o = toObject(v, path);
+    checkKeys(o, path, {"axis", "degrees", "radians", "quaternion"});
+    if (o.contains("quaternion")) {
+        if (o.contains("axis") || o.contains("degrees") || o.contains("radians")) {
+            throw FieldError{path, QStringLiteral("give either \"quaternion\" or \"axis\" with an angle, not both")};
+        }
+        const QString qp = join(path, "quaternion");
+        const QJsonArray a = toArray(o.value("quaternion"), qp);
+        if (a.size() != 4) {
+            throw FieldError{qp, QStringLiteral("must be [w, x, y, z], got %1 elements").arg(a.size())};
+        }
+        // Scene files write quaternions scalar first: [w, x, y, z] (physics/math_types.h).
+        const Quat q(toNumber(a[0], qp + "[0]"), toNumber(a[1], qp + "[1]"),
+                     toNumber(a[2], qp + "[2]"), toNumber(a[3], qp + "[3]"));
+        if (q.norm() == 0.0) {
+            throw FieldError{qp, QStringLiteral("must not be the zero quaternion")};
+        }
+        return q.normalized();
+    }
+    const Vec3 axis = toVec3(require(o, path, "axis"), join(path, "axis"));
+    if (axis.norm() == 0.0) {
+        throw FieldError{join(path, "axis"), QStringLiteral("rotation axis must not be zero")};
+    }
+    if (o.contains("degrees") == o.contains("radians")) {
+        throw FieldError{path, QStringLiteral("give the angle as exactly one of \"degrees\" or \"radians\"")};
+    }
+    const double angle = o.contains("degrees")
+                             ? toNumber(o.value("degrees"), join(path, "degrees")) * std::numbers::pi / 180.0
+                             : toNumber(o.value("radians"), join(path, "radians"));
+    return Quat(Eigen::AngleAxisd(angle, axis.normalized()));
+}
+
+BodyDef toBody(const QJsonValue& v, const QString& path)
+{
+    const QJsonObject o = toObject(v, path);
+    checkKeys(o, path, {"name", "size", "mass", "fixed", "position", "orientation",
+                        "linear_velocity", "angular_velocity"});
+    BodyDef b;
+    b.name = toString(require(o, path, "name"), join(path, "name")).toStdString();
+    b.size = toVec3(require(o, path, "size"), join(path, "size"));
+    b.fixed = o.contains("fixed") ? toBool(o.value("fixed"), join(path, "fixed")) : false;
+    if (b.fixed) {
+        if (o.contains("mass")) {
+            throw FieldError{join(path, "mass"),
+                             QStringLiteral("a fixed body has infinite mass; leave \"mass\" out")};
+        }
+    } else {
+        b.mass = toNumber(require(o, path, "mass"), join(path, "mass"));
+    }
+    b.x0_W = vec3Or(o, path, "position", Vec3::Zero());
+    b.q0_WB = o.contains("orientation") ? toOrientation(o.value("orientation"), join(path, "orientation"))
+                                        : Quat::Identity();
+    b.v0_W = vec3Or(o, path, "linear_velocity", Vec3::Zero());
+    b.omega0_W = vec3Or(o, path, "angular_velocity", Vec3::Zero());
+    if (b.fixed && (b.v0_W != Vec3::Zero() || b.omega0_W != Vec3::Zero())) {
+        throw FieldError{path, QStringLiteral("a fixed body cannot have a velocity")};
+    }
+    return b;
+}
+
+int bodyByName(const SceneDef& scene, const QJsonObject& o, const QString& path)
+{
+    const QString name = toString(require(o, path, "body"), join(path, "body"));
+    const int index = scene.bodyIndex(name.toStdString());
+    if (index < 0) {
+        QStringList names;
+        for (const BodyDef& b : scene.bodies) names << QString::fromStdString(b.name);
+        throw FieldError{join(path, "body"), QStringLiteral("no body named \"%1\" (bodies: %2)")
+                                                 .arg(name, names.join(QStringLiteral(", ")))};
+    }
+    return index;
+}
+
+ForceDef toForce(const SceneDef& scene, const QJsonValue& v, const QString& path)
+{
+    const QJsonObject o = toObject(v, path);
+    checkKeys(o, path, {"body", "point", "force", "from_step", "to_step"});
+    ForceDef f;
+    f.body = bodyByName(scene, o, path);
+    f.p_W = toVec3(require(o, path, "point"), join(path, "point"));
+    f.f_W = toVec3(require(o, path, "force"), join(path, "force"));
+    // Lifetime: steps k with from_step <= k < to_step. Neither key: step 0 only.
+    // Only from_step: that one step. Only to_step: from step 0.
+    f.fromStep = o.contains("from_step") ? toInteger(o.value("from_step"), join(path, "from_step")) : 0;
+    f.toStep = o.contains("to_step") ? toInteger(o.value("to_step"), join(path, "to_step")) : f.fromStep + 1;
+    return f;
+}
+
+ProbeDef toProbe(const SceneDef& scene, const QJsonValue& v, const QString& path)
+{
+    const QJsonObject o = toObject(v, path);
+    checkKeys(o, path, {"body", "point"});
+    ProbeDef p;
+    p.body = bodyByName(scene, o, path);
+    p.p0_W = toVec3(require(o, path, "point"), join(path, "point"));
+    return p;
+}
+
+SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
+{
+    checkKeys(o, QString(), {"name", "description", "dt", "steps", "integrator", "inertia_convention",
+                             "gravity", "bodies", "forces", "probes"});
+    SceneDef s;
+    s.name = o.contains("name") ? toString(o.value("name"), "name").toStdString()
+                                : QFileInfo(fileLabel).completeBaseName().toStdString();
+    s.description = o.contains("description") ? toString(o.value("description"), "description").toStdString()
+                                              : std::string();
+    s.dt = toNumber(require(o, QString(), "dt"), "dt");
+    s.steps = o.contains("steps") ? toInteger(o.value("steps"), "steps") : 1;
+    s.integrator = o.contains("integrator") ? toString(o.value("integrator"), "integrator").toStdString()
+                                            : std::string("explicit-euler");
+    if (o.contains("inertia_convention")) {
+        const QString c = toString(o.value("inertia_convention"), "inertia_convention");
+        if (c == "standard") {
+            s.inertiaConvention = InertiaConvention::Standard;
+        } else if (c == "course-template") {
+            s.inertiaConvention = InertiaConvention::CourseTemplate;
+        } else {
+            throw FieldError{"inertia_convention",
+                             QStringLiteral("must be \"standard\" or \"course-template\", got \"%1\"").arg(c)};
+        }
+    }
+    s.g_W = vec3Or(o, QString(), "gravity", Vec3::Zero());
+
+    const QJsonArray bodies = toArray(require(o, QString(), "bodies"), "bodies");
+    for (int i = 0; i < bodies.size(); ++i) {
+        s.bodies.push_back(toBody(bodies[i], QStringLiteral("bodies[%1]").arg(i)));
+    }
+    if (o.contains("forces")) {
+        const QJsonArray forces = toArray(o.value("forces"), "forces");
+        for (int i = 0; i < forces.size(); ++i) {
+            s.forces.push_back(toForce(s, forces[i], QStringLiteral("forces[%1]").arg(i)));
+        }
+    }
+    if (o.contains("probes")) {
+        const QJsonArray probes = toArray(o.value("probes"), "probes");
+        for (int i = 0; i < probes.size(); ++i) {
+            s.probes.push_back(toProbe(s, probes[i], QStringLiteral("probes[%1]").arg(i)));
+        }
+    }
+    return s;
+}
+
+// 1-based line and column of a byte offset.
+std::pair<int, int> lineColumn(const QByteArray& text, int offset)
+{
+    int line = 1;
+    int column = 1;
+    for (int i = 0; i < offset && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return {line, column};
+}
+
+} // namespace
+
+SceneLoadResult parseScene(const QByteArray& json, const QString& fileLabel)
+{
+    SceneLoadResult result;
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        // QJsonParseError::offset points at (or just after) the offending token.
+        const auto [line, column] = lineColumn(json, parseError.offset);
+        QString reason = QStringLiteral("malformed JSON at line %1, column %2: %3")
+                             .arg(line).arg(column).arg(parseError.errorString());
+        const QByteArray rest = json.mid(std::max(0, parseError.offset - 9), 18);
+        if (rest.contains("NaN") || rest.contains("Infinity")) {
+            reason += QStringLiteral(" (JSON has no NaN or Infinity; every number must be finite)");
+        }
+        result.errors << QStringLiteral("%1: %2").arg(fileLabel, reason);
+        return result;
+    }
+    if (!doc.isObject()) {
+        result.errors << QStringLiteral("%1: the top level must be a JSON object").arg(fileLabel);
+        return result;
+    }
+    try {
+        SceneDef scene = toScene(doc.object(), fileLabel);
+        for (const SceneIssue& issue : validate(scene)) {
+            result.errors << QStringLiteral("%1: %2: %3")
+                                 .arg(fileLabel, QString::fromStdString(issue.path),
+                                      QString::fromStdString(issue.reason));
+        }
+        if (result.errors.isEmpty()) {
+            result.scene = std::move(scene);
+        }
+    } catch (const FieldError& e) {
+        result.errors << QStringLiteral("%1: %2: %3").arg(fileLabel, e.path, e.reason);
+    }
+    return result;
+}
+
+SceneLoadResult loadSceneFile(const QString& filePath)
+{
+    QFile file(filePath);
+    if (!file.open(QIODevice::ReadOnly)) {
+        SceneLoadResult result;
+        result.errors << QStringLiteral("%1: cannot open: %2").arg(filePath, file.errorString());
+        return result;
+    }
+    return parseScene(file.readAll(), filePath);
+}
+
+} // namespace rbw

@@ -1,0 +1,239 @@
+#include "app/gui/trace_model.h"
+
+#include "app/core/value_format.h"
+
+#include <QBrush>
+#include <QColor>
+#include <QFont>
+
+namespace rbw {
+
+namespace {
+
+QString humanName(const TraceEntry& e)
+{
+    QString name = QString::fromLatin1(e.info->id).replace('_', ' ');
+    if (e.index >= 0) {
+        name += e.info->stage == Stage::Probes ? QStringLiteral(" (probe %1)").arg(e.index)
+                                               : QStringLiteral(" #%1").arg(e.index);
+    }
+    return name;
+}
+
+QString stageTitle(Stage s)
+{
+    switch (s) {
+    case Stage::Forces: return QObject::tr("Forces");
+    case Stage::Integration: return QObject::tr("Integration");
+    case Stage::Collision: return QObject::tr("Collisions");
+    case Stage::Correction: return QObject::tr("Position correction");
+    case Stage::Probes: return QObject::tr("Probe points");
+    }
+    return {};
+}
+
+bool sameValue(const TraceValue& a, const TraceValue& b)
+{
+    if (a.index() != b.index()) return false;
+    return std::visit(
+        [&](const auto& x) {
+            using T = std::decay_t<decltype(x)>;
+            const T& y = std::get<T>(b);
+            if constexpr (std::is_same_v<T, double>) return x == y;
+            else if constexpr (std::is_same_v<T, Quat>) return x.coeffs() == y.coeffs();
+            else return x == y;
+        },
+        a);
+}
+
+} // namespace
+
+TraceModel::TraceModel(QObject* parent)
+    : QAbstractItemModel(parent)
+{
+    nodes_.push_back(Node{});
+}
+
+void TraceModel::clear()
+{
+    beginResetModel();
+    trace_ = StepTrace{};
+    changed_.clear();
+    nodes_.assign(1, Node{});
+    rowOfEntry_.clear();
+    endResetModel();
+}
+
+bool TraceModel::sameShape(const StepTrace& next) const
+{
+    if (next.entries.size() != trace_.entries.size()) return false;
+    for (size_t i = 0; i < next.entries.size(); ++i) {
+        const TraceEntry& a = next.entries[i];
+        const TraceEntry& b = trace_.entries[i];
+        if (a.info != b.info || a.body != b.body || a.index != b.index) return false;
+    }
+    return true;
+}
+
+void TraceModel::setTrace(const StepTrace& trace, const SceneDef& scene)
+{
+    if (!trace_.entries.empty() && sameShape(trace)) {
+        // Same rows: report only the values that changed.
+        for (size_t i = 0; i < trace.entries.size(); ++i) {
+            changed_[i] = !sameValue(trace.entries[i].value, trace_.entries[i].value);
+        }
+        trace_ = trace;
+        for (size_t i = 0; i < trace_.entries.size(); ++i) {
+            const Node& n = nodes_[rowOfEntry_[i]];
+            const QModelIndex first = createIndex(n.row, 0, quintptr(rowOfEntry_[i]));
+            const QModelIndex last = createIndex(n.row, ColumnCount - 1, quintptr(rowOfEntry_[i]));
+            emit dataChanged(first, last);   // value and highlight of every row may change
+        }
+        return;
+    }
+    beginResetModel();
+    // A new shape: everything present is new relative to nothing shown before.
+    changed_.assign(trace.entries.size(), trace_.entries.empty() ? 0 : 1);
+    trace_ = trace;
+    rebuild(scene);
+    endResetModel();
+}
+
+void TraceModel::rebuild(const SceneDef& scene)
+{
+    nodes_.assign(1, Node{});
+    rowOfEntry_.assign(trace_.entries.size(), -1);
+    auto addChild = [&](int parent, const QString& label, int entry) {
+        Node n;
+        n.parent = parent;
+        n.row = static_cast<int>(nodes_[parent].children.size());
+        n.label = label;
+        n.entry = entry;
+        nodes_.push_back(n);
+        const int id = static_cast<int>(nodes_.size()) - 1;
+        nodes_[parent].children.push_back(id);
+        return id;
+    };
+    // Stages in pipeline order, then bodies in scene order, then entries in trace order.
+    for (Stage stage : {Stage::Forces, Stage::Integration, Stage::Collision, Stage::Correction, Stage::Probes}) {
+        int stageNode = -1;
+        for (int body = -1; body < static_cast<int>(scene.bodies.size()); ++body) {
+            int bodyNode = -1;
+            for (size_t i = 0; i < trace_.entries.size(); ++i) {
+                const TraceEntry& e = trace_.entries[i];
+                if (e.info->stage != stage || e.body != body) continue;
+                if (stageNode < 0) stageNode = addChild(0, stageTitle(stage), -1);
+                if (bodyNode < 0) {
+                    bodyNode = body < 0 ? stageNode
+                                        : addChild(stageNode, QString::fromStdString(scene.bodies[body].name), -1);
+                }
+                rowOfEntry_[i] = addChild(bodyNode, QString(), static_cast<int>(i));
+            }
+        }
+    }
+}
+
+QModelIndex TraceModel::index(int row, int column, const QModelIndex& parent) const
+{
+    const int p = parent.isValid() ? static_cast<int>(parent.internalId()) : 0;
+    if (row < 0 || column < 0 || column >= ColumnCount || row >= static_cast<int>(nodes_[p].children.size())) {
+        return {};
+    }
+    return createIndex(row, column, quintptr(nodes_[p].children[row]));
+}
+
+QModelIndex TraceModel::parent(const QModelIndex& child) const
+{
+    if (!child.isValid()) return {};
+    const int p = nodes_[child.internalId()].parent;
+    if (p <= 0) return {};
+    return createIndex(nodes_[p].row, 0, quintptr(p));
+}
+
+int TraceModel::rowCount(const QModelIndex& parent) const
+{
+    if (parent.isValid() && parent.column() != 0) return 0;
+    const int p = parent.isValid() ? static_cast<int>(parent.internalId()) : 0;
+    return static_cast<int>(nodes_[p].children.size());
+}
+
+int TraceModel::columnCount(const QModelIndex&) const
+{
+    return ColumnCount;
+}
+
+const TraceEntry* TraceModel::entryAt(const QModelIndex& index) const
+{
+    if (!index.isValid()) return nullptr;
+    const int e = nodes_[index.internalId()].entry;
+    return e < 0 ? nullptr : &trace_.entries[e];
+}
+
+QString TraceModel::rowText(const QModelIndex& index) const
+{
+    const TraceEntry* e = entryAt(index);
+    if (e == nullptr) return {};
+    QString text = QString::fromUtf8(e->info->text) + QStringLiteral(" = ") + formatValue(e->value);
+    if (*e->info->unit) text += ' ' + QString::fromUtf8(e->info->unit);
+    if (e->info->frame != Frame::None) text += QStringLiteral(" [%1]").arg(frameName(e->info->frame));
+    return text;
+}
+
+QVariant TraceModel::data(const QModelIndex& index, int role) const
+{
+    if (!index.isValid()) return {};
+    const Node& n = nodes_[index.internalId()];
+    if (n.entry < 0) {
+        if (role == Qt::DisplayRole && index.column() == QuantityColumn) return n.label;
+        if (role == Qt::FontRole) {
+            QFont f;
+            f.setBold(true);
+            return f;
+        }
+        return {};
+    }
+    const TraceEntry& e = trace_.entries[n.entry];
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (index.column()) {
+        case QuantityColumn: return humanName(e);
+        case SymbolColumn: return QString::fromUtf8(e.info->text);
+        case ValueColumn: return formatValue(e.value);
+        case FrameColumn: return QString::fromLatin1(frameName(e.info->frame));
+        case UnitColumn: return QString::fromUtf8(e.info->unit);
+        case FormulaColumn: return QString::fromUtf8(e.info->formula);
+        }
+        return {};
+    case Qt::ToolTipRole:
+        return QString::fromUtf8(e.info->formula);
+    case Qt::BackgroundRole:
+        if (changed_[n.entry]) return QBrush(QColor(255, 244, 196));
+        return {};
+    case Qt::FontRole:
+        if (index.column() == ValueColumn) return QFont(QStringLiteral("monospace"));
+        return {};
+    case IdRole:
+        return QString::fromLatin1(e.info->id);
+    case LatexRole:
+        return QString::fromUtf8(e.info->symbol) + QStringLiteral(" = ") + latexValue(e.value);
+    case ChangedRole:
+        return bool(changed_[n.entry]);
+    }
+    return {};
+}
+
+QVariant TraceModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
+    switch (section) {
+    case QuantityColumn: return tr("Quantity");
+    case SymbolColumn: return tr("Symbol");
+    case ValueColumn: return tr("Value");
+    case FrameColumn: return tr("Frame");
+    case UnitColumn: return tr("Unit");
+    case FormulaColumn: return tr("Formula (LaTeX)");
+    }
+    return {};
+}
+
+} // namespace rbw

@@ -1,0 +1,115 @@
+#include "physics/scene.h"
+
+#include "physics/integrator_registry.h"
+
+#include <cmath>
+#include <set>
+#include <sstream>
+
+namespace rbw {
+
+int SceneDef::bodyIndex(const std::string& bodyName) const
+{
+    for (int i = 0; i < static_cast<int>(bodies.size()); ++i) {
+        if (bodies[i].name == bodyName) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+namespace {
+
+std::string num(double x)
+{
+    std::ostringstream os;
+    os.precision(17);
+    os << x;
+    return os.str();
+}
+
+void requireFinite(std::vector<SceneIssue>& out, const std::string& path, const Vec3& v)
+{
+    if (!v.allFinite()) {
+        out.push_back({path, "must be finite (no NaN or infinity)"});
+    }
+}
+
+} // namespace
+
+std::vector<SceneIssue> validate(const SceneDef& scene)
+{
+    std::vector<SceneIssue> out;
+    if (!(std::isfinite(scene.dt) && scene.dt > 0.0)) {
+        out.push_back({"dt", "must be a finite number > 0, got " + num(scene.dt)});
+    }
+    if (scene.steps < 0) {
+        out.push_back({"steps", "must be >= 0, got " + std::to_string(scene.steps)});
+    }
+    if (!makeIntegrator(scene.integrator)) {
+        out.push_back({"integrator", "unknown integrator \"" + scene.integrator +
+                                         "\"; known: " + integratorNames()});
+    }
+    requireFinite(out, "gravity", scene.g_W);
+    if (scene.bodies.empty()) {
+        out.push_back({"bodies", "must list at least one body"});
+    }
+
+    std::set<std::string> names;
+    for (size_t i = 0; i < scene.bodies.size(); ++i) {
+        const BodyDef& b = scene.bodies[i];
+        const std::string at = "bodies[" + std::to_string(i) + "]";
+        if (b.name.empty()) {
+            out.push_back({at + ".name", "must not be empty"});
+        } else if (!names.insert(b.name).second) {
+            out.push_back({at + ".name", "duplicate body name \"" + b.name + "\""});
+        }
+        if (!b.fixed && !(std::isfinite(b.mass) && b.mass > 0.0)) {
+            out.push_back({at + ".mass", "must be a finite number > 0, got " + num(b.mass)});
+        }
+        for (int k = 0; k < 3; ++k) {
+            if (!(std::isfinite(b.size[k]) && b.size[k] > 0.0)) {
+                out.push_back({at + ".size", "every edge length must be a finite number > 0, got " +
+                                                 num(b.size[k]) + " at index " + std::to_string(k)});
+                break;
+            }
+        }
+        requireFinite(out, at + ".position", b.x0_W);
+        requireFinite(out, at + ".linear_velocity", b.v0_W);
+        requireFinite(out, at + ".angular_velocity", b.omega0_W);
+        if (!b.q0_WB.coeffs().allFinite() || b.q0_WB.norm() == 0.0) {
+            out.push_back({at + ".orientation", "must be a finite, non-zero quaternion"});
+        }
+    }
+
+    const int nBodies = static_cast<int>(scene.bodies.size());
+    for (size_t i = 0; i < scene.forces.size(); ++i) {
+        const ForceDef& f = scene.forces[i];
+        const std::string at = "forces[" + std::to_string(i) + "]";
+        if (f.body < 0 || f.body >= nBodies) {
+            out.push_back({at + ".body", "names no body of the scene"});
+        } else if (scene.bodies[f.body].fixed) {
+            out.push_back({at + ".body", "body \"" + scene.bodies[f.body].name +
+                                             "\" is fixed; a force on it has no effect"});
+        }
+        requireFinite(out, at + ".point", f.p_W);
+        requireFinite(out, at + ".force", f.f_W);
+        if (f.fromStep < 0) {
+            out.push_back({at + ".from_step", "must be >= 0"});
+        }
+        if (f.toStep <= f.fromStep) {
+            out.push_back({at + ".to_step", "must be greater than from_step"});
+        }
+    }
+    for (size_t i = 0; i < scene.probes.size(); ++i) {
+        const ProbeDef& p = scene.probes[i];
+        const std::string at = "probes[" + std::to_string(i) + "]";
+        if (p.body < 0 || p.body >= nBodies) {
+            out.push_back({at + ".body", "names no body of the scene"});
+        }
+        requireFinite(out, at + ".point", p.p0_W);
+    }
+    return out;
+}
+
+} // namespace rbw

@@ -1,0 +1,80 @@
+// The trace: the named intermediate quantities of one step, in the order they were
+// computed. It is the one source of truth for every view: the app's panels and
+// derivations, the CLI's JSON and CSV, the plots and the exports all read it.
+//
+// An entry points at a static QuantityInfo (id, symbol, formula, frame, unit, stage;
+// see quantities.h) and carries the body, an optional index (which force, which
+// probe, which contact) and the value. Recording therefore costs a push_back of a
+// small struct and never allocates a string; with the trace switched off (a null
+// StepTrace*) nothing is recorded at all.
+#pragma once
+
+#include "physics/diagnostics.h"
+#include "physics/math_types.h"
+
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace rbw {
+
+// Stages of a step, in the order the pipeline runs them.
+enum class Stage { Forces, Integration, Collision, Correction, Probes };
+enum class Frame { None, World, Body };
+
+const char* stageName(Stage s);   // "forces", "integration", ...
+const char* frameName(Frame f);   // "", "world", "body"
+
+struct QuantityInfo {
+    const char* id;        // stable identifier, e.g. "angular_velocity"
+    Stage stage;
+    const char* symbol;    // LaTeX, e.g. "\\boldsymbol{\\omega}"
+    const char* text;      // plain UTF-8 symbol for tables, e.g. "ω"
+    const char* formula;   // LaTeX, e.g. "\\boldsymbol{\\omega} = I^{-1}\\mathbf{L}"
+    Frame frame;
+    const char* unit;      // UTF-8, e.g. "rad/s"
+};
+
+// A scalar, a 3-vector, a quaternion ([w, x, y, z] when written out) or a 3x3 matrix.
+using TraceValue = std::variant<double, Vec3, Quat, Mat3>;
+
+struct TraceEntry {
+    const QuantityInfo* info;
+    int body;     // index into the world's bodies, -1 for a world-level quantity
+    int index;    // which force / probe / contact, -1 when there is only one
+    TraceValue value;
+};
+
+struct StepTrace {
+    long step = 0;        // k: this step advances t_k = k h to t_{k+1}
+    double time = 0.0;    // t_{k+1}, the time at the end of the step
+    std::vector<TraceEntry> entries;
+    Diagnostics diagnostics;   // after the step
+
+    void clear()
+    {
+        entries.clear();
+        step = 0;
+        time = 0.0;
+        diagnostics = Diagnostics{};
+    }
+
+    void add(const QuantityInfo& info, int body, const TraceValue& value, int index = -1)
+    {
+        entries.push_back(TraceEntry{&info, body, index, value});
+    }
+
+    // The first entry with this id for this body (and index); nullptr if none.
+    const TraceEntry* find(std::string_view id, int body, int index = -1) const;
+};
+
+// Records into a trace only when one is given: `record(trace, q::force, b, F)`.
+inline void record(StepTrace* trace, const QuantityInfo& info, int body, const TraceValue& value,
+                   int index = -1)
+{
+    if (trace != nullptr) {
+        trace->add(info, body, value, index);
+    }
+}
+
+} // namespace rbw
