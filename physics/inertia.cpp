@@ -1,5 +1,7 @@
 #include "physics/inertia.h"
 
+#include <cassert>
+
 namespace rbw {
 
 Mat3 boxInertiaBody(const Vec3& size, double mass)
@@ -17,12 +19,14 @@ Mat3 boxInertiaBody(const Vec3& size, double mass)
 
 Mat3 inverseInertiaWorld(const Mat3& R_WB, const Mat3& I0inv_B, InertiaConvention convention)
 {
+    assert(I0inv_B.isDiagonal() && "body inertia must be given in its principal frame");
     if (convention == InertiaConvention::CourseTemplate) {
         // Iinv_W = R^T I0^-1 R  (TUM template reference solution, reference.md section 1)
-        return R_WB.transpose() * I0inv_B * R_WB;
+        return R_WB.transpose() * I0inv_B.diagonal().asDiagonal() * R_WB;
     }
-    // Iinv_W = R I0^-1 R^T  (TUM slides "Simulation Algorithm 3D", step 6)
-    return R_WB * I0inv_B * R_WB.transpose();
+    // Iinv_W = R I0^-1 R^T  (TUM slides "Simulation Algorithm 3D", step 6).
+    // I0 is diagonal in the principal body frame, so the product runs on its diagonal.
+    return R_WB * I0inv_B.diagonal().asDiagonal() * R_WB.transpose();
 }
 
 } // namespace rbw

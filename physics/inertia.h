@@ -24,6 +24,7 @@ enum class InertiaConvention { Standard, CourseTemplate };
 Mat3 boxInertiaBody(const Vec3& size, double mass);
 
 // Iinv_W = R I0^-1 R^T (or R^T I0^-1 R for the course-template convention).
+// I0inv_B must be diagonal (the body frame is the principal frame).
 Mat3 inverseInertiaWorld(const Mat3& R_WB, const Mat3& I0inv_B,
                          InertiaConvention convention = InertiaConvention::Standard);
 

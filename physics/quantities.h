@@ -59,7 +59,7 @@ inline constexpr QuantityInfo angular_velocity{
 // --- probes (algorithm step 8) ---
 inline constexpr QuantityInfo probe_position{
     "probe_position", Stage::Probes, "\\mathbf{p}", "p",
-    "\\mathbf{p} = \\mathbf{x} + R\\,\\mathbf{p}_0", Frame::World, "m"};
+    "\\mathbf{p} = \\mathbf{x} + R\\,\\mathbf{p}_B", Frame::World, "m"};
 inline constexpr QuantityInfo point_velocity{
     "point_velocity", Stage::Probes, "\\mathbf{v}_p", "v_p",
     "\\mathbf{v}_p = \\mathbf{v} + \\boldsymbol{\\omega} \\times (\\mathbf{p} - \\mathbf{x})",

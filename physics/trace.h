@@ -69,11 +69,12 @@ struct StepTrace {
 };
 
 // Records into a trace only when one is given: `record(trace, q::force, b, F)`.
-inline void record(StepTrace* trace, const QuantityInfo& info, int body, const TraceValue& value,
-                   int index = -1)
+// A template, so that with the trace off not even the TraceValue is built.
+template <class T>
+inline void record(StepTrace* trace, const QuantityInfo& info, int body, const T& value, int index = -1)
 {
     if (trace != nullptr) {
-        trace->add(info, body, value, index);
+        trace->add(info, body, TraceValue(value), index);
     }
 }
 

@@ -61,7 +61,9 @@ public:
 private:
     void forcesStage(StepTrace* trace);
     void probesStage(StepTrace* trace) const;
-    StepStatus checkFinite() const;
+    bool allStatesFinite() const;
+    // The first non-finite quantity, as a status that names step, body and quantity.
+    StepStatus describeBlowUp() const;
 
     SceneDef scene_;
     std::vector<MassProperties> mass_;
@@ -71,6 +73,7 @@ private:
     std::vector<BodyState> states_;
     std::vector<BodyLoad> loads_;
     std::vector<ForceDef> onceForces_;
+    std::vector<char> loaded_;           // forces stage scratch: which bodies carry a load
     long stepIndex_ = 0;
     double time_ = 0.0;
     StepStatus status_;

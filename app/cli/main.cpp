@@ -82,6 +82,7 @@ int runScene(const QCommandLineParser& parser, const QString& sceneFile)
     else if (traceArg != "last") return badInput("--trace: must be none, last or all, got \"" + traceArg + "\"");
     const QString format = parser.value("format");
     if (format != "json" && format != "csv") return badInput("--format: must be json or csv, got \"" + format + "\"");
+    if (format == "csv") traceMode = TraceMode::None;   // CSV prints no trace: do not record one
 
     rbw::World world(std::move(scene));
     rbw::CsvWriter csv(out());

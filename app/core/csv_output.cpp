@@ -13,6 +13,13 @@ QString exact(double x)
     return QString::number(x, 'g', QLocale::FloatingPointShortest);
 }
 
+// RFC 4180: a cell with a comma, quote or line break is quoted, quotes doubled.
+QString cell(const QString& text)
+{
+    if (!text.contains(',') && !text.contains('"') && !text.contains('\n')) return text;
+    return '"' + QString(text).replace('"', QStringLiteral("\"\"")) + '"';
+}
+
 } // namespace
 
 void CsvWriter::writeHeader(const SceneDef& scene)
@@ -20,10 +27,10 @@ void CsvWriter::writeHeader(const SceneDef& scene)
     QStringList columns{"step", "time"};
     for (const BodyDef& b : scene.bodies) {
         const QString n = QString::fromStdString(b.name);
-        for (const char* c : {"x", "y", "z"}) columns << QStringLiteral("%1.x_%2").arg(n, c);
-        for (const char* c : {"w", "x", "y", "z"}) columns << QStringLiteral("%1.r_%2").arg(n, c);
-        for (const char* c : {"x", "y", "z"}) columns << QStringLiteral("%1.v_%2").arg(n, c);
-        for (const char* c : {"x", "y", "z"}) columns << QStringLiteral("%1.omega_%2").arg(n, c);
+        for (const char* c : {"x", "y", "z"}) columns << cell(QStringLiteral("%1.x_%2").arg(n, c));
+        for (const char* c : {"w", "x", "y", "z"}) columns << cell(QStringLiteral("%1.r_%2").arg(n, c));
+        for (const char* c : {"x", "y", "z"}) columns << cell(QStringLiteral("%1.v_%2").arg(n, c));
+        for (const char* c : {"x", "y", "z"}) columns << cell(QStringLiteral("%1.omega_%2").arg(n, c));
     }
     columns << "kinetic_energy_translational" << "kinetic_energy_rotational" << "potential_energy"
             << "total_energy";

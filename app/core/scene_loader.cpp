@@ -88,8 +88,17 @@ QJsonValue require(const QJsonObject& o, const QString& path, const QString& key
     return o.value(key);
 }
 
+// A number JSON cannot hold (NaN, Infinity, 1e999) is swapped for a string with this
+// prefix before a second parse, so the error can name the field it stands in.
+const QString kNonFinitePrefix = QStringLiteral("\u0001nonfinite:");
+
 double toNumber(const QJsonValue& v, const QString& path)
 {
+    if (v.isString() && v.toString().startsWith(kNonFinitePrefix)) {
+        throw FieldError{path, QStringLiteral("must be a finite number, got %1 (JSON has no NaN or Infinity, "
+                                              "and every number must fit in a double)")
+                                   .arg(v.toString().mid(kNonFinitePrefix.size()))};
+    }
     if (!v.isDouble()) {
         throw FieldError{path, QStringLiteral("must be a number, got %1").arg(typeName(v))};
     }
@@ -287,7 +296,14 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
 
     const QJsonArray bodies = toArray(require(o, QString(), "bodies"), "bodies");
     for (int i = 0; i < bodies.size(); ++i) {
-        s.bodies.push_back(toBody(bodies[i], QStringLiteral("bodies[%1]").arg(i)));
+        const QString at = QStringLiteral("bodies[%1]").arg(i);
+        BodyDef body = toBody(bodies[i], at);
+        // Checked here, before forces and probes look bodies up by name.
+        if (s.bodyIndex(body.name) >= 0) {
+            throw FieldError{at + ".name", QStringLiteral("duplicate body name \"%1\"")
+                                               .arg(QString::fromStdString(body.name))};
+        }
+        s.bodies.push_back(std::move(body));
     }
     if (o.contains("forces")) {
         const QJsonArray forces = toArray(o.value("forces"), "forces");
@@ -320,22 +336,41 @@ std::pair<int, int> lineColumn(const QByteArray& text, int offset)
     return {line, column};
 }
 
+// For an illegal number at `offset`, the same text with that token replaced by a
+// marker string; empty if there is no such token.
+QByteArray markNonFiniteNumber(const QByteArray& json, int offset)
+{
+    static const QByteArray chars("+-.0123456789eEINaNnfinity");
+    auto inToken = [&](int i) { return i >= 0 && i < json.size() && chars.contains(json[i]); };
+    int start = inToken(offset) ? offset : offset - 1;
+    if (!inToken(start)) return {};
+    int end = start;
+    while (inToken(start - 1)) --start;
+    while (inToken(end + 1)) ++end;
+    const QByteArray token = json.mid(start, end - start + 1);
+    return json.left(start) + '"' + kNonFinitePrefix.toUtf8() + token + '"' + json.mid(end + 1);
+}
+
 } // namespace
 
 SceneLoadResult parseScene(const QByteArray& json, const QString& fileLabel)
 {
     SceneLoadResult result;
     QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
+    QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error == QJsonParseError::IllegalNumber) {
+        QJsonParseError second;
+        const QJsonDocument marked = QJsonDocument::fromJson(markNonFiniteNumber(json, parseError.offset), &second);
+        if (second.error == QJsonParseError::NoError) {
+            doc = marked;   // the structural pass below names the field
+            parseError = second;
+        }
+    }
     if (parseError.error != QJsonParseError::NoError) {
         // QJsonParseError::offset points at (or just after) the offending token.
         const auto [line, column] = lineColumn(json, parseError.offset);
         QString reason = QStringLiteral("malformed JSON at line %1, column %2: %3")
                              .arg(line).arg(column).arg(parseError.errorString());
-        const QByteArray rest = json.mid(std::max(0, parseError.offset - 9), 18);
-        if (rest.contains("NaN") || rest.contains("Infinity")) {
-            reason += QStringLiteral(" (JSON has no NaN or Infinity; every number must be finite)");
-        }
         result.errors << QStringLiteral("%1: %2").arg(fileLabel, reason);
         return result;
     }

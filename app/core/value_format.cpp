@@ -3,6 +3,9 @@
 #include <QJsonArray>
 #include <QStringList>
 
+#include <algorithm>
+#include <cmath>
+
 namespace rbw {
 
 QString formatNumber(double x, int digits)
@@ -15,11 +18,26 @@ QString formatNumber(double x, int digits)
 
 namespace {
 
-QString joinNumbers(const double* values, int n, int digits)
+// For display only: an entry smaller than 1e-12 of the largest entry of the same
+// value is round-off (e.g. cos 90 deg = 6e-17 in R) and is shown as 0. JSON output keeps
+// every bit.
+double chop(double x, double scale)
+{
+    return std::abs(x) < 1e-12 * scale ? 0.0 : x;
+}
+
+double largest(const double* values, int n)
+{
+    double m = 0.0;
+    for (int i = 0; i < n; ++i) m = std::max(m, std::abs(values[i]));
+    return m;
+}
+
+QString joinNumbers(const double* values, int n, int digits, double scale)
 {
     QStringList parts;
     for (int i = 0; i < n; ++i) {
-        parts << formatNumber(values[i], digits);
+        parts << formatNumber(chop(values[i], scale), digits);
     }
     return parts.join(QStringLiteral(", "));
 }
@@ -38,16 +56,17 @@ QString formatValue(const TraceValue& value, int digits)
     return std::visit(
         Overloaded{
             [&](double x) { return formatNumber(x, digits); },
-            [&](const Vec3& v) { return '(' + joinNumbers(v.data(), 3, digits) + ')'; },
+            [&](const Vec3& v) { return '(' + joinNumbers(v.data(), 3, digits, largest(v.data(), 3)) + ')'; },
             [&](const Quat& q) {
                 const std::array<double, 4> c = toWxyz(q);
-                return QStringLiteral("[w x y z] = [") + joinNumbers(c.data(), 4, digits) + ']';
+                return QStringLiteral("[w x y z] = [") + joinNumbers(c.data(), 4, digits, largest(c.data(), 4)) + ']';
             },
             [&](const Mat3& m) {
+                const double scale = m.cwiseAbs().maxCoeff();
                 QStringList rows;
                 for (int r = 0; r < 3; ++r) {
                     const double row[3] = {m(r, 0), m(r, 1), m(r, 2)};
-                    rows << '[' + joinNumbers(row, 3, digits) + ']';
+                    rows << '[' + joinNumbers(row, 3, digits, scale) + ']';
                 }
                 return '[' + rows.join(QStringLiteral(", ")) + ']';
             },
@@ -61,21 +80,25 @@ QString latexValue(const TraceValue& value, int digits)
         Overloaded{
             [&](double x) { return formatNumber(x, digits); },
             [&](const Vec3& v) {
+                const double s = largest(v.data(), 3);
                 return QStringLiteral("\\begin{pmatrix} %1 \\\\ %2 \\\\ %3 \\end{pmatrix}")
-                    .arg(formatNumber(v.x(), digits), formatNumber(v.y(), digits), formatNumber(v.z(), digits));
+                    .arg(formatNumber(chop(v.x(), s), digits), formatNumber(chop(v.y(), s), digits),
+                         formatNumber(chop(v.z(), s), digits));
             },
             [&](const Quat& q) {
                 const std::array<double, 4> c = toWxyz(q);
+                const double s = largest(c.data(), 4);
                 return QStringLiteral("(%1,\\ %2,\\ %3,\\ %4)")
-                    .arg(formatNumber(c[0], digits), formatNumber(c[1], digits), formatNumber(c[2], digits),
-                         formatNumber(c[3], digits));
+                    .arg(formatNumber(chop(c[0], s), digits), formatNumber(chop(c[1], s), digits),
+                         formatNumber(chop(c[2], s), digits), formatNumber(chop(c[3], s), digits));
             },
             [&](const Mat3& m) {
+                const double s = m.cwiseAbs().maxCoeff();
                 QStringList rows;
                 for (int r = 0; r < 3; ++r) {
                     rows << QStringLiteral("%1 & %2 & %3")
-                                .arg(formatNumber(m(r, 0), digits), formatNumber(m(r, 1), digits),
-                                     formatNumber(m(r, 2), digits));
+                                .arg(formatNumber(chop(m(r, 0), s), digits), formatNumber(chop(m(r, 1), s), digits),
+                                     formatNumber(chop(m(r, 2), s), digits));
                 }
                 return QStringLiteral("\\begin{pmatrix} ") + rows.join(QStringLiteral(" \\\\ ")) +
                        QStringLiteral(" \\end{pmatrix}");

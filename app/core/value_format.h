@@ -9,6 +9,9 @@
 
 namespace rbw {
 
+// Display forms chop round-off: an entry below 1e-12 of the value's largest entry is
+// shown as 0 (R of a 90 degree turn has cos 90 deg = 6e-17). JSON keeps every bit.
+
 // Plain text with `digits` significant digits: "-2.4", "(1, 1, 0)",
 // "[w x y z] = [1, 0, 0, 0]", "[[a, b, c], [d, e, f], [g, h, i]]".
 QString formatValue(const TraceValue& value, int digits = 7);

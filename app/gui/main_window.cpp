@@ -226,6 +226,9 @@ void MainWindow::updateStatus()
                               .arg(world_->time(), 0, 'g', 6)
                               .arg(world_->scene().dt, 0, 'g', 6)
                               .arg(QString::fromLatin1(world_->integrator().name())));
+    if (world_->stepIndex() == 0) {
+        statusLabel_->setText(statusLabel_->text() + tr("  —  press Step (S) to take the first step"));
+    }
 }
 
 } // namespace rbw

@@ -78,16 +78,19 @@ bool TraceModel::sameShape(const StepTrace& next) const
 void TraceModel::setTrace(const StepTrace& trace, const SceneDef& scene)
 {
     if (!trace_.entries.empty() && sameShape(trace)) {
-        // Same rows: report only the values that changed.
+        // Same rows: report only rows whose value or highlight changed.
+        std::vector<char> touched(trace.entries.size(), 0);
         for (size_t i = 0; i < trace.entries.size(); ++i) {
-            changed_[i] = !sameValue(trace.entries[i].value, trace_.entries[i].value);
+            const char nowChanged = !sameValue(trace.entries[i].value, trace_.entries[i].value);
+            touched[i] = nowChanged || changed_[i];
+            changed_[i] = nowChanged;
         }
         trace_ = trace;
         for (size_t i = 0; i < trace_.entries.size(); ++i) {
+            if (!touched[i]) continue;
             const Node& n = nodes_[rowOfEntry_[i]];
-            const QModelIndex first = createIndex(n.row, 0, quintptr(rowOfEntry_[i]));
-            const QModelIndex last = createIndex(n.row, ColumnCount - 1, quintptr(rowOfEntry_[i]));
-            emit dataChanged(first, last);   // value and highlight of every row may change
+            emit dataChanged(createIndex(n.row, 0, quintptr(rowOfEntry_[i])),
+                             createIndex(n.row, ColumnCount - 1, quintptr(rowOfEntry_[i])));
         }
         return;
     }
