@@ -29,7 +29,9 @@ void ExplicitEuler::integrate(const IntegrationInput& in, std::vector<BodyState>
         const Quat omegaQuat(0.0, s.omega_W.x(), s.omega_W.y(), s.omega_W.z());
         const Quat rDot = omegaQuat * s.q_WB;
         s.q_WB.coeffs() += (0.5 * h) * rDot.coeffs();
-        s.q_WB.normalize();
+        // stableNormalize: |r|^2 would overflow to infinity for (h/2)|omega| > ~1e154 and
+        // a plain normalize() would then silently give the zero quaternion.
+        s.q_WB.coeffs().stableNormalize();
         record(trace, q::orientation, b, s.q_WB);
 
         // Step 5: L <- L + h q
