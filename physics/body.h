@@ -23,6 +23,7 @@ struct BodyDef {
     Vec3 size = Vec3::Ones();   // edge lengths (a, b, c) along body x, y, z
     double mass = 1.0;          // ignored when fixed
     bool fixed = false;         // fixed bodies have infinite mass and inertia
+    bool angularResponse = true;   // false: collisions treat it as a particle (no change of L)
 
     // Initial state, as the scene file gives it.
     Vec3 x0_W = Vec3::Zero();

@@ -3,6 +3,7 @@
 #include "physics/integrator_registry.h"
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -16,6 +17,45 @@ int SceneDef::bodyIndex(const std::string& bodyName) const
         }
     }
     return -1;
+}
+
+int SceneDef::planeIndex(const std::string& planeName) const
+{
+    for (int i = 0; i < static_cast<int>(planes.size()); ++i) {
+        if (planes[i].name == planeName) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+namespace {
+
+const PairOverride* findOverride(const SceneDef& s, int a, int b, int planeB)
+{
+    for (const PairOverride& o : s.pairs) {
+        const bool sameBodies = planeB >= 0 ? (o.planeB == planeB && o.bodyA == a)
+                                            : (o.planeB < 0 && ((o.bodyA == a && o.bodyB == b) ||
+                                                                (o.bodyA == b && o.bodyB == a)));
+        if (sameBodies) {
+            return &o;
+        }
+    }
+    return nullptr;
+}
+
+} // namespace
+
+double SceneDef::restitutionFor(int a, int b, int planeB) const
+{
+    const PairOverride* o = findOverride(*this, a, b, planeB);
+    return o != nullptr && o->restitution >= 0.0 ? o->restitution : restitution;
+}
+
+double SceneDef::frictionFor(int a, int b, int planeB) const
+{
+    const PairOverride* o = findOverride(*this, a, b, planeB);
+    return o != nullptr && o->friction >= 0.0 ? o->friction : friction;
 }
 
 namespace {
@@ -99,6 +139,40 @@ std::vector<SceneIssue> validate(const SceneDef& scene)
         }
         if (f.toStep <= f.fromStep) {
             out.push_back({at + ".to_step", "must be greater than from_step"});
+        }
+    }
+    auto checkCoefficient = [&](const std::string& path, double x, double hi) {
+        if (!(std::isfinite(x) && x >= 0.0 && x <= hi)) {
+            out.push_back({path, hi == 1.0 ? "must be a number from 0 to 1, got " + num(x)
+                                           : "must be a finite number >= 0, got " + num(x)});
+        }
+    };
+    checkCoefficient("restitution", scene.restitution, 1.0);
+    checkCoefficient("friction", scene.friction, std::numeric_limits<double>::infinity());
+    for (size_t i = 0; i < scene.planes.size(); ++i) {
+        const PlaneDef& p = scene.planes[i];
+        const std::string at = "planes[" + std::to_string(i) + "]";
+        if (p.name.empty()) {
+            out.push_back({at + ".name", "must not be empty"});
+        } else if (!names.insert(p.name).second) {
+            out.push_back({at + ".name", "duplicate name \"" + p.name + "\" (bodies and planes share names)"});
+        }
+        requireFinite(out, at + ".point", p.point_W);
+        if (!p.n_W.allFinite() || std::abs(p.n_W.norm() - 1.0) > 1e-12) {
+            out.push_back({at + ".normal", "must be a finite unit vector"});
+        }
+    }
+    for (size_t i = 0; i < scene.pairs.size(); ++i) {
+        const PairOverride& o = scene.pairs[i];
+        const std::string at = "pairs[" + std::to_string(i) + "]";
+        if (o.bodyA < 0 || o.bodyA >= nBodies || (o.planeB < 0 && (o.bodyB < 0 || o.bodyB >= nBodies))) {
+            out.push_back({at + ".bodies", "must name two bodies, or a body and a plane"});
+        }
+        if (o.restitution != -1.0) {
+            checkCoefficient(at + ".restitution", o.restitution, 1.0);
+        }
+        if (o.friction != -1.0) {
+            checkCoefficient(at + ".friction", o.friction, std::numeric_limits<double>::infinity());
         }
     }
     for (size_t i = 0; i < scene.probes.size(); ++i) {

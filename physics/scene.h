@@ -11,6 +11,7 @@
 #pragma once
 
 #include "physics/body.h"
+#include "physics/collision/contact.h"
 #include "physics/inertia.h"
 #include "physics/math_types.h"
 
@@ -34,6 +35,20 @@ struct ProbeDef {
     Vec3 p0_W = Vec3::Zero();        // world position at t = 0; moves with its body
 };
 
+// How the corners of a box below a plane are resolved: one impulse per corner, in
+// turn, or one impulse at their average point (the Napier assessment's method).
+enum class PlaneContactMode { PerPoint, Average };
+
+// Per-pair overrides of the scene-wide restitution and friction. B is a body, or a
+// plane when planeB >= 0.
+struct PairOverride {
+    int bodyA = -1;
+    int bodyB = -1;
+    int planeB = -1;
+    double restitution = -1.0;   // < 0: not overridden
+    double friction = -1.0;      // < 0: not overridden
+};
+
 struct SceneDef {
     std::string name;
     std::string description;
@@ -46,7 +61,20 @@ struct SceneDef {
     std::vector<ForceDef> forces;
     std::vector<ProbeDef> probes;
 
+    // Collisions (reference.md sections 2-4).
+    std::vector<PlaneDef> planes;          // fixed planes: ground and walls
+    bool boxCollisions = true;             // box-box contacts between the bodies
+    double restitution = 1.0;              // c, scene-wide
+    double friction = 0.0;                 // mu, scene-wide
+    std::vector<PairOverride> pairs;
+    bool positionCorrection = false;       // push penetrating bodies apart after the impulses
+    PlaneContactMode planeContacts = PlaneContactMode::PerPoint;
+
     bool hasGravity() const { return g_W != Vec3::Zero(); }
+    int planeIndex(const std::string& planeName) const;   // -1 if none
+    // c and mu for a pair (B a body, or the plane planeB when planeB >= 0).
+    double restitutionFor(int a, int b, int planeB) const;
+    double frictionFor(int a, int b, int planeB) const;
     int bodyIndex(const std::string& bodyName) const;   // -1 if none
 };
 

@@ -45,15 +45,29 @@ struct TraceEntry {
     TraceValue value;
 };
 
+// What a contact is, beside its numbers (which are entries of Stage::Collision whose
+// index is the contact's number).
+struct ContactHeader {
+    int bodyA = -1;
+    int bodyB = -1;            // -1 when B is a plane
+    int plane = -1;            // index into SceneDef::planes, or -1
+    const char* feature = "";  // "vertex-face", "face-vertex", "edge-edge", "vertex-plane"
+    const char* resolution = "";   // "single-point" (SAT), "per-point" or "average" (planes)
+    int pointCount = 1;        // corners averaged into this contact ("average")
+    bool separating = false;   // v_rel . n > 0: no impulse was applied
+};
+
 struct StepTrace {
     long step = 0;        // k: this step advances t_k = k h to t_{k+1}
     double time = 0.0;    // t_{k+1}, the time at the end of the step
     std::vector<TraceEntry> entries;
+    std::vector<ContactHeader> contacts;
     Diagnostics diagnostics;   // after the step
 
     void clear()
     {
         entries.clear();
+        contacts.clear();
         step = 0;
         time = 0.0;
         diagnostics = Diagnostics{};

@@ -1,8 +1,12 @@
 #include "physics/world.h"
 
+#include "physics/collision/box_box_sat.h"
+#include "physics/collision/box_plane.h"
+#include "physics/collision/impulse.h"
 #include "physics/integrator_registry.h"
 #include "physics/quantities.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -22,6 +26,14 @@ World::World(SceneDef scene)
         states_.push_back(initialState(def, mass_.back(), scene_.inertiaConvention));
     }
     loads_.assign(n, BodyLoad{});
+    movable_.resize(n);
+    int movableCount = 0;
+    for (size_t b = 0; b < n; ++b) {
+        movable_[b] = scene_.bodies[b].fixed ? 0 : 1;
+        movableCount += movable_[b];
+    }
+    // Box-box contacts need two bodies, at least one of them movable.
+    boxPairsPossible_ = scene_.boxCollisions && n >= 2 && movableCount >= 1;
     for (const ProbeDef& p : scene_.probes) {
         const BodyState& s = states_[p.body];
         // p_B = R0^T (p0 - x0): the probe's fixed offset in the body frame
@@ -54,13 +66,22 @@ StepStatus World::step(StepTrace* trace)
 
     const IntegrationInput in{scene_.dt, scene_.bodies, mass_, loads_, scene_.inertiaConvention};
     integrator_->integrate(in, states_, trace);
-
     time_ += scene_.dt;
     ++stepIndex_;
     onceForces_.clear();
 
+    // Check before the collision stage: a NaN pose makes every overlap test pass and
+    // would spread the NaN into healthy bodies, and the report would blame them.
     if (!allStatesFinite()) {
         status_ = describeBlowUp();
+    } else if (runsCollisionStage()) {
+        collisionStage(trace);
+        if (scene_.positionCorrection) {
+            correctionStage(trace);
+        }
+        if (!allStatesFinite()) {
+            status_ = describeBlowUp();
+        }
     }
     if (trace != nullptr) {
         trace->time = time_;
@@ -133,6 +154,174 @@ void World::forcesStage(StepTrace* trace)
             }
             trace->add(gravity ? q::force_with_gravity : q::force, b, loads_[b].F_W);
             trace->add(q::torque, b, loads_[b].q_W);
+        }
+    }
+}
+
+BoxPose World::poseOf(int body) const
+{
+    const BodyState& s = states_[body];
+    return BoxPose{s.x_W, s.R_WB, 0.5 * scene_.bodies[body].size};
+}
+
+void World::collisionStage(StepTrace* trace)
+{
+    contactCount_ = 0;
+    corrections_.clear();
+    const int n = static_cast<int>(states_.size());
+
+    // Box-box: sweep-and-prune on world AABBs, then the course's SAT on each
+    // overlapping pair (reference.md section 2).
+    if (boxPairsPossible_) {
+        aabbs_.resize(n);
+        for (int b = 0; b < n; ++b) {
+            aabbs_[b] = boxAabb(poseOf(b));
+        }
+        BroadPhaseStats stats;
+        broadPhase_.findPairs(aabbs_, movable_, pairs_, stats);
+        record(trace, q::pairs_tested, -1, double(stats.pairsTested));
+        record(trace, q::pairs_overlapping, -1, double(stats.pairsOverlapping));
+        for (const auto& [a, b] : pairs_) {
+            const std::optional<ContactGeometry> hit = collideBoxBoxSAT(poseOf(a), poseOf(b));
+            if (hit) {
+                resolveContact(*hit, a, b, -1, "single-point", 1, trace);
+            }
+        }
+    }
+
+    // Box-plane: every corner below a plane is a contact (Napier practical 6).
+    for (int p = 0; p < static_cast<int>(scene_.planes.size()); ++p) {
+        for (int b = 0; b < n; ++b) {
+            if (!movable_[b]) {
+                continue;
+            }
+            planeContacts_.clear();
+            const int count = collideBoxPlane(poseOf(b), scene_.planes[p], planeContacts_);
+            if (count == 0) {
+                continue;
+            }
+            if (scene_.planeContacts == PlaneContactMode::Average) {
+                // One impulse at the average of the corners (Napier assessment).
+                resolveContact(averageContact(planeContacts_, 0, planeContacts_.size()), b, -1, p, "average",
+                               count, trace);
+            } else {
+                // One impulse per corner, in turn, each seeing the velocities the
+                // previous ones left.
+                for (const ContactGeometry& g : planeContacts_) {
+                    resolveContact(g, b, -1, p, "per-point", 1, trace);
+                }
+            }
+        }
+    }
+}
+
+void World::resolveContact(const ContactGeometry& g, int a, int b, int plane, const char* resolution,
+                           int pointCount, StepTrace* trace)
+{
+    const int k = contactCount_++;
+    ResponseBody A{&states_[a], &mass_[a], scene_.bodies[a].angularResponse};
+    ResponseBody B;
+    if (b >= 0) {
+        B = ResponseBody{&states_[b], &mass_[b], scene_.bodies[b].angularResponse};
+    }
+    const double c = scene_.restitutionFor(a, b, plane);
+    const double mu = scene_.frictionFor(a, b, plane);
+    const ImpulseResult r = applyContactImpulse(g, A, B, c, mu, scene_.inertiaConvention);
+
+    if (scene_.positionCorrection && g.depth > 0.0 && plane < 0) {
+        // Box-box: keep the deepest penetration per pair. (Planes re-measure in the
+        // correction stage itself.)
+        bool merged = false;
+        for (Correction& corr : corrections_) {
+            if (corr.a == a && corr.b == b) {
+                if (g.depth > corr.depth) {
+                    corr.depth = g.depth;
+                    corr.n_W = g.n_W;
+                }
+                merged = true;
+                break;
+            }
+        }
+        if (!merged) {
+            corrections_.push_back(Correction{a, b, g.n_W, g.depth});
+        }
+    }
+
+    if (trace == nullptr) {
+        return;
+    }
+    trace->contacts.push_back(ContactHeader{a, b, plane, featureName(g.feature), resolution, pointCount, r.separating});
+    trace->add(q::contact_point, a, g.p_W, k);
+    trace->add(q::contact_normal, a, g.n_W, k);
+    trace->add(q::contact_depth, a, g.depth, k);
+    trace->add(q::x_a, a, r.x_a, k);
+    if (b >= 0) trace->add(q::x_b, b, r.x_b, k);
+    trace->add(q::velocity_a, a, r.velocity_a, k);
+    trace->add(q::velocity_b, b, r.velocity_b, k);
+    trace->add(q::relative_velocity, a, r.v_rel, k);
+    trace->add(q::normal_velocity, a, r.v_rel_n, k);
+    if (r.separating) {
+        return;   // no impulse: the header says "separating"
+    }
+    trace->add(q::restitution, a, r.restitution, k);
+    trace->add(q::numerator, a, r.numerator, k);
+    trace->add(q::inv_mass_a, a, r.invMassA, k);
+    trace->add(q::inv_mass_b, b, r.invMassB, k);
+    trace->add(q::rotational_a, a, r.rotationalA, k);
+    trace->add(q::rotational_b, b, r.rotationalB, k);
+    trace->add(q::denominator, a, r.denominator, k);
+    trace->add(q::impulse, a, r.J, k);
+    if (r.mu > 0.0) trace->add(q::friction_impulse, a, r.frictionImpulse_W, k);
+    trace->add(q::delta_v_a, a, r.dv_A, k);
+    trace->add(q::delta_L_a, a, r.dL_A, k);
+    trace->add(q::linear_velocity_a, a, states_[a].v_W, k);
+    trace->add(q::angular_momentum_a, a, states_[a].L_W, k);
+    trace->add(q::angular_velocity_a, a, states_[a].omega_W, k);
+    if (b >= 0 && mass_[b].invM != 0.0) {
+        trace->add(q::delta_v_b, b, r.dv_B, k);
+        trace->add(q::delta_L_b, b, r.dL_B, k);
+        trace->add(q::linear_velocity_b, b, states_[b].v_W, k);
+        trace->add(q::angular_momentum_b, b, states_[b].L_W, k);
+        trace->add(q::angular_velocity_b, b, states_[b].omega_W, k);
+    }
+    trace->add(q::kinetic_energy_before, a, r.kineticBefore, k);
+    trace->add(q::kinetic_energy_after, a, r.kineticAfter, k);
+}
+
+void World::correctionStage(StepTrace* trace)
+{
+    // Projection: move penetrating bodies apart along n by the depth d, shared in
+    // proportion to inverse mass. Not part of the impulse: it changes x only.
+    int index = 0;
+    for (const Correction& c : corrections_) {
+        const double invMA = mass_[c.a].invM;
+        const double invMB = mass_[c.b].invM;
+        const double sum = invMA + invMB;
+        if (sum == 0.0) continue;
+        // dx_A = d n (1/M_A) / (1/M_A + 1/M_B),  dx_B = -d n (1/M_B) / (1/M_A + 1/M_B)
+        const Vec3 dx_A = c.depth * (invMA / sum) * c.n_W;
+        const Vec3 dx_B = -c.depth * (invMB / sum) * c.n_W;
+        states_[c.a].x_W += dx_A;
+        states_[c.b].x_W += dx_B;
+        if (invMA != 0.0) record(trace, q::correction_a, c.a, dx_A, index);
+        if (invMB != 0.0) record(trace, q::correction_b, c.b, dx_B, index);
+        ++index;
+    }
+    // Fixed planes have the last word: every movable body is lifted out of every plane
+    // by its deepest corner's depth measured now, d = max(0, max_corners -n.(corner - point)),
+    // since a box-box correction may have pushed it in. A plane takes no share: dx = d n.
+    for (int p = 0; p < static_cast<int>(scene_.planes.size()); ++p) {
+        const PlaneDef& plane = scene_.planes[p];
+        for (int b = 0; b < static_cast<int>(states_.size()); ++b) {
+            if (!movable_[b]) continue;
+            double depth = 0.0;
+            for (const Vec3& corner : boxCorners(poseOf(b))) {
+                depth = std::max(depth, -plane.n_W.dot(corner - plane.point_W));
+            }
+            if (depth == 0.0) continue;
+            const Vec3 dx_A = depth * plane.n_W;
+            states_[b].x_W += dx_A;
+            record(trace, q::correction_a, b, dx_A, index++);
         }
     }
 }

@@ -1,11 +1,16 @@
 // The world: a scene definition plus the mutable state of its bodies, and the
-// pipeline of stages that one step runs (forces -> integration -> probes).
+// pipeline of stages that one step runs:
+//   forces -> integration -> collision -> correction -> probes.
+// The collision stage runs only when the scene has something that can collide (two
+// bodies with box collisions on, or a plane), and correction only when asked for.
 //
 // Data flows one way: SceneDef -> World -> step() -> StepTrace -> every view.
 // No view reaches back into the world to recompute a quantity.
 #pragma once
 
 #include "physics/body.h"
+#include "physics/collision/broad_phase.h"
+#include "physics/collision/contact.h"
 #include "physics/diagnostics.h"
 #include "physics/integrator.h"
 #include "physics/scene.h"
@@ -58,8 +63,17 @@ public:
     WorldSnapshot snapshot() const;
     void restore(const WorldSnapshot& s);
 
+    bool runsCollisionStage() const { return boxPairsPossible_ || !scene_.planes.empty(); }
+
 private:
     void forcesStage(StepTrace* trace);
+    void collisionStage(StepTrace* trace);
+    void correctionStage(StepTrace* trace);
+    // Resolves one contact between body a and body b (or plane when plane >= 0) and
+    // records it; returns nothing, the state changes in place.
+    void resolveContact(const ContactGeometry& g, int a, int b, int plane, const char* resolution,
+                        int pointCount, StepTrace* trace);
+    BoxPose poseOf(int body) const;
     void probesStage(StepTrace* trace) const;
     bool allStatesFinite() const;
     // The first non-finite quantity, as a status that names step, body and quantity.
@@ -74,6 +88,21 @@ private:
     std::vector<BodyLoad> loads_;
     std::vector<ForceDef> onceForces_;
     std::vector<char> loaded_;           // forces stage scratch: which bodies carry a load
+
+    // Collision stage scratch, kept between steps to avoid allocations.
+    bool boxPairsPossible_ = false;
+    SweepAndPrune broadPhase_;
+    std::vector<Aabb> aabbs_;
+    std::vector<char> movable_;
+    std::vector<std::pair<int, int>> pairs_;
+    std::vector<ContactGeometry> planeContacts_;
+    struct Correction {   // a box-box pair to push apart
+        int a, b;
+        Vec3 n_W;
+        double depth;
+    };
+    std::vector<Correction> corrections_;
+    int contactCount_ = 0;
     long stepIndex_ = 0;
     double time_ = 0.0;
     StepStatus status_;

@@ -52,10 +52,32 @@ QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene)
         }
         quantities.append(q);
     }
+    // contacts[]: each contact's header, and its Stage::Collision entries keyed by id.
+    QJsonArray contacts;
+    for (int k = 0; k < static_cast<int>(trace.contacts.size()); ++k) {
+        const ContactHeader& c = trace.contacts[k];
+        QJsonArray names{bodyName(scene, c.bodyA)};
+        names.append(c.plane >= 0 ? QJsonValue(QString::fromStdString(scene.planes[c.plane].name))
+                                  : bodyName(scene, c.bodyB));
+        QJsonObject contact{
+            {"bodies", names},
+            {"feature", c.feature},
+            {"resolution", c.resolution},
+            {"points_averaged", c.pointCount},
+            {"separating", c.separating},
+        };
+        for (const TraceEntry& e : trace.entries) {
+            if (e.info->stage == Stage::Collision && e.index == k) {
+                contact.insert(QString::fromLatin1(e.info->id), jsonValue(e.value));
+            }
+        }
+        contacts.append(contact);
+    }
     return QJsonObject{
         {"step", static_cast<qint64>(trace.step)},
         {"time", trace.time},
         {"quantities", quantities},
+        {"contacts", contacts},
         {"diagnostics", diagnosticsToJson(trace.diagnostics)},
     };
 }

@@ -206,7 +206,7 @@ BodyDef toBody(const QJsonValue& v, const QString& path)
 {
     const QJsonObject o = toObject(v, path);
     checkKeys(o, path, {"name", "size", "mass", "fixed", "position", "orientation",
-                        "linear_velocity", "angular_velocity"});
+                        "linear_velocity", "angular_velocity", "angular_response"});
     BodyDef b;
     b.name = toString(require(o, path, "name"), join(path, "name")).toStdString();
     b.size = toVec3(require(o, path, "size"), join(path, "size"));
@@ -224,6 +224,9 @@ BodyDef toBody(const QJsonValue& v, const QString& path)
                                         : Quat::Identity();
     b.v0_W = vec3Or(o, path, "linear_velocity", Vec3::Zero());
     b.omega0_W = vec3Or(o, path, "angular_velocity", Vec3::Zero());
+    b.angularResponse = o.contains("angular_response")
+                            ? toBool(o.value("angular_response"), join(path, "angular_response"))
+                            : true;
     if (b.fixed && (b.v0_W != Vec3::Zero() || b.omega0_W != Vec3::Zero())) {
         throw FieldError{path, QStringLiteral("a fixed body cannot have a velocity")};
     }
@@ -268,10 +271,65 @@ ProbeDef toProbe(const SceneDef& scene, const QJsonValue& v, const QString& path
     return p;
 }
 
+PlaneDef toPlane(const QJsonValue& v, const QString& path)
+{
+    const QJsonObject o = toObject(v, path);
+    checkKeys(o, path, {"name", "point", "normal"});
+    PlaneDef p;
+    p.name = toString(require(o, path, "name"), join(path, "name")).toStdString();
+    p.point_W = toVec3(require(o, path, "point"), join(path, "point"));
+    const Vec3 n = toVec3(require(o, path, "normal"), join(path, "normal"));
+    if (n.norm() == 0.0) {
+        throw FieldError{join(path, "normal"), QStringLiteral("must not be the zero vector")};
+    }
+    p.n_W = n.normalized();
+    return p;
+}
+
+double coefficient(const QJsonValue& v, const QString& path, bool atMostOne)
+{
+    const double x = toNumber(v, path);
+    if (x < 0.0 || (atMostOne && x > 1.0)) {
+        throw FieldError{path, atMostOne ? QStringLiteral("must be a number from 0 to 1, got %1").arg(x)
+                                         : QStringLiteral("must be >= 0, got %1").arg(x)};
+    }
+    return x;
+}
+
+PairOverride toPair(const SceneDef& scene, const QJsonValue& v, const QString& path)
+{
+    const QJsonObject o = toObject(v, path);
+    checkKeys(o, path, {"bodies", "restitution", "friction"});
+    const QString bp = join(path, "bodies");
+    const QJsonArray names = toArray(require(o, path, "bodies"), bp);
+    if (names.size() != 2) {
+        throw FieldError{bp, QStringLiteral("must name exactly two: [\"bodyA\", \"bodyB or plane\"]")};
+    }
+    PairOverride pair;
+    const QString first = toString(names[0], bp + "[0]");
+    const QString second = toString(names[1], bp + "[1]");
+    pair.bodyA = scene.bodyIndex(first.toStdString());
+    if (pair.bodyA < 0) {
+        throw FieldError{bp + "[0]", QStringLiteral("no body named \"%1\"").arg(first)};
+    }
+    pair.bodyB = scene.bodyIndex(second.toStdString());
+    pair.planeB = pair.bodyB < 0 ? scene.planeIndex(second.toStdString()) : -1;
+    if (pair.bodyB < 0 && pair.planeB < 0) {
+        throw FieldError{bp + "[1]", QStringLiteral("no body or plane named \"%1\"").arg(second)};
+    }
+    if (!o.contains("restitution") && !o.contains("friction")) {
+        throw FieldError{path, QStringLiteral("give \"restitution\", \"friction\" or both")};
+    }
+    if (o.contains("restitution")) pair.restitution = coefficient(o.value("restitution"), join(path, "restitution"), true);
+    if (o.contains("friction")) pair.friction = coefficient(o.value("friction"), join(path, "friction"), false);
+    return pair;
+}
+
 SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
 {
     checkKeys(o, QString(), {"name", "description", "dt", "steps", "integrator", "inertia_convention",
-                             "gravity", "bodies", "forces", "probes"});
+                             "gravity", "bodies", "forces", "probes", "planes", "box_collisions",
+                             "restitution", "friction", "pairs", "position_correction", "plane_contacts"});
     SceneDef s;
     s.name = o.contains("name") ? toString(o.value("name"), "name").toStdString()
                                 : QFileInfo(fileLabel).completeBaseName().toStdString();
@@ -315,6 +373,41 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
         const QJsonArray probes = toArray(o.value("probes"), "probes");
         for (int i = 0; i < probes.size(); ++i) {
             s.probes.push_back(toProbe(s, probes[i], QStringLiteral("probes[%1]").arg(i)));
+        }
+    }
+    if (o.contains("planes")) {
+        const QJsonArray planes = toArray(o.value("planes"), "planes");
+        for (int i = 0; i < planes.size(); ++i) {
+            const QString at = QStringLiteral("planes[%1]").arg(i);
+            PlaneDef plane = toPlane(planes[i], at);
+            if (s.planeIndex(plane.name) >= 0 || s.bodyIndex(plane.name) >= 0) {
+                throw FieldError{at + ".name", QStringLiteral("duplicate name \"%1\" (bodies and planes share names)")
+                                                   .arg(QString::fromStdString(plane.name))};
+            }
+            s.planes.push_back(std::move(plane));
+        }
+    }
+    if (o.contains("box_collisions")) s.boxCollisions = toBool(o.value("box_collisions"), "box_collisions");
+    if (o.contains("restitution")) s.restitution = coefficient(o.value("restitution"), "restitution", true);
+    if (o.contains("friction")) s.friction = coefficient(o.value("friction"), "friction", false);
+    if (o.contains("pairs")) {
+        const QJsonArray pairs = toArray(o.value("pairs"), "pairs");
+        for (int i = 0; i < pairs.size(); ++i) {
+            s.pairs.push_back(toPair(s, pairs[i], QStringLiteral("pairs[%1]").arg(i)));
+        }
+    }
+    if (o.contains("position_correction")) {
+        s.positionCorrection = toBool(o.value("position_correction"), "position_correction");
+    }
+    if (o.contains("plane_contacts")) {
+        const QString mode = toString(o.value("plane_contacts"), "plane_contacts");
+        if (mode == "per-point") {
+            s.planeContacts = PlaneContactMode::PerPoint;
+        } else if (mode == "average") {
+            s.planeContacts = PlaneContactMode::Average;
+        } else {
+            throw FieldError{"plane_contacts",
+                             QStringLiteral("must be \"per-point\" or \"average\", got \"%1\"").arg(mode)};
         }
     }
     return s;

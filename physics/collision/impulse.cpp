@@ -1,0 +1,131 @@
+#include "physics/collision/impulse.h"
+
+#include <cmath>
+
+namespace rbw {
+
+namespace {
+
+struct Side {
+    Vec3 v = Vec3::Zero();
+    Vec3 omega = Vec3::Zero();
+    Mat3 Iinv = Mat3::Zero();
+    double invM = 0.0;
+    double M = 0.0;
+};
+
+Side sideOf(const ResponseBody& b)
+{
+    Side s;
+    if (b.state == nullptr || b.mass == nullptr || b.mass->invM == 0.0) {
+        return s;   // fixed: 1/M = 0 and I^-1 = 0 (reference.md section 3)
+    }
+    // A "particle" side (angular response off) moves with its centre of mass only:
+    // its contact velocity is v, and the impulse does not change its L.
+    s.v = b.state->v_W;
+    s.omega = b.angular ? b.state->omega_W : Vec3::Zero();
+    s.Iinv = b.angular ? b.state->Iinv_W : Mat3::Zero();
+    s.invM = b.mass->invM;
+    s.M = b.mass->M;
+    return s;
+}
+
+double kinetic(const ResponseBody& b)
+{
+    if (b.state == nullptr || b.mass == nullptr || b.mass->invM == 0.0) return 0.0;
+    // T = 1/2 M |v|^2 + 1/2 omega . L
+    return 0.5 * b.mass->M * b.state->v_W.squaredNorm() + 0.5 * b.state->omega_W.dot(b.state->L_W);
+}
+
+// [(I^-1 (x x d)) x x] . d: the rotational term of the effective-mass denominator along d.
+double rotationalTerm(const Mat3& Iinv, const Vec3& x, const Vec3& d)
+{
+    const Vec3 Iinv_xd = Iinv * x.cross(d);
+    return Iinv_xd.cross(x).dot(d);
+}
+
+// v += P / M, L += x x P, omega = I^-1 L, for the impulse P on a body at lever arm x.
+void applyImpulse(ResponseBody& b, const Vec3& x, const Vec3& P_W, Vec3& dv, Vec3& dL,
+                  InertiaConvention convention)
+{
+    if (b.state == nullptr || b.mass == nullptr || b.mass->invM == 0.0) return;
+    const Vec3 dv_step = b.mass->invM * P_W;
+    b.state->v_W += dv_step;
+    dv += dv_step;
+    if (b.angular) {
+        const Vec3 dL_step = x.cross(P_W);
+        b.state->L_W += dL_step;
+        dL += dL_step;
+        updateDerived(*b.mass, *b.state, convention);
+    }
+}
+
+} // namespace
+
+ImpulseResult applyContactImpulse(const ContactGeometry& g, ResponseBody A, ResponseBody B, double restitution,
+                                  double mu, InertiaConvention convention)
+{
+    ImpulseResult r;
+    r.restitution = restitution;
+    r.mu = mu;
+    const Vec3& n = g.n_W;
+    const Side a = sideOf(A);
+    const Side b = sideOf(B);
+    r.kineticBefore = kinetic(A) + kinetic(B);
+
+    // x_a = p - x_A, x_b = p - x_B (a plane has no centre: its x_b is unused)
+    r.x_a = A.state != nullptr ? Vec3(g.p_W - A.state->x_W) : Vec3::Zero();
+    r.x_b = B.state != nullptr ? Vec3(g.p_W - B.state->x_W) : Vec3::Zero();
+
+    // v_X(p) = v_X + omega_X x x_x,  v_rel = v_A(p) - v_B(p)
+    r.velocity_a = a.v + a.omega.cross(r.x_a);
+    r.velocity_b = b.v + b.omega.cross(r.x_b);
+    r.v_rel = r.velocity_a - r.velocity_b;
+    r.v_rel_n = r.v_rel.dot(n);
+
+    // Terms of J's denominator, recorded even when separating so a student can compare.
+    r.invMassA = a.invM;
+    r.invMassB = b.invM;
+    r.rotationalA = rotationalTerm(a.Iinv, r.x_a, n);
+    r.rotationalB = rotationalTerm(b.Iinv, r.x_b, n);
+    r.denominator = r.invMassA + r.invMassB + r.rotationalA + r.rotationalB;
+
+    // v_rel . n > 0: the bodies are separating, no impulse.
+    if (r.v_rel_n > 0.0 || r.denominator <= 0.0) {
+        r.separating = r.v_rel_n > 0.0;
+        r.kineticAfter = r.kineticBefore;
+        return r;
+    }
+
+    // J = -(1 + c) (v_rel . n) / denominator
+    r.numerator = -(1.0 + restitution) * r.v_rel_n;
+    r.J = r.numerator / r.denominator;
+    applyImpulse(A, r.x_a, r.J * n, r.dv_A, r.dL_A, convention);
+    applyImpulse(B, r.x_b, Vec3(-r.J * n), r.dv_B, r.dL_B, convention);
+
+    // Coulomb friction: a tangential impulse against the sliding velocity after the
+    // normal impulse, clamped to mu J.
+    if (mu > 0.0) {
+        const Side a2 = sideOf(A);
+        const Side b2 = sideOf(B);
+        const Vec3 v_rel2 = (a2.v + a2.omega.cross(r.x_a)) - (b2.v + b2.omega.cross(r.x_b));
+        const Vec3 v_t = v_rel2 - v_rel2.dot(n) * n;
+        const double speed_t = v_t.norm();
+        if (speed_t > 1e-12 * std::max(1.0, v_rel2.norm())) {
+            r.t_W = -v_t / speed_t;   // friction opposes sliding
+            const double k_t = a2.invM + b2.invM + rotationalTerm(a2.Iinv, r.x_a, r.t_W) +
+                               rotationalTerm(b2.Iinv, r.x_b, r.t_W);
+            // J_t* = -(v_rel' . t) / k_t = speed_t / k_t stops the sliding exactly
+            const double J_t_stop = speed_t / k_t;
+            r.J_t = std::min(J_t_stop, mu * r.J);
+            r.frictionClamped = J_t_stop > mu * r.J;
+            r.frictionImpulse_W = r.J_t * r.t_W;
+            applyImpulse(A, r.x_a, r.frictionImpulse_W, r.dv_A, r.dL_A, convention);
+            applyImpulse(B, r.x_b, Vec3(-r.frictionImpulse_W), r.dv_B, r.dL_B, convention);
+        }
+    }
+    r.kineticAfter = kinetic(A) + kinetic(B);
+    return r;
+}
+
+} // namespace rbw
