@@ -72,10 +72,10 @@ namespace rbw::q {
 // --- collision stage (reference.md sections 2-3) ---
 // World-level broad-phase counts (body -1).
 inline constexpr QuantityInfo pairs_tested{
-    "pairs_tested", Stage::Collision, "N_{\\text{tested}}", "pairs tested",
+    "pairs_tested", Stage::Collision, "N_{\\text{tested}}", "N",
     "\\text{AABB pairs tested by sweep-and-prune}", Frame::None, ""};
 inline constexpr QuantityInfo pairs_overlapping{
-    "pairs_overlapping", Stage::Collision, "N_{\\text{overlap}}", "pairs overlapping",
+    "pairs_overlapping", Stage::Collision, "N_{\\text{overlap}}", "N",
     "\\text{AABB pairs that overlap (sent to SAT)}", Frame::None, ""};
 // Per contact (index = contact number).
 inline constexpr QuantityInfo contact_point{

@@ -177,10 +177,10 @@ void World::collisionStage(StepTrace* trace)
         for (int b = 0; b < n; ++b) {
             aabbs_[b] = boxAabb(poseOf(b));
         }
-        BroadPhaseStats stats;
-        broadPhase_.findPairs(aabbs_, movable_, pairs_, stats);
-        record(trace, q::pairs_tested, -1, double(stats.pairsTested));
-        record(trace, q::pairs_overlapping, -1, double(stats.pairsOverlapping));
+        lastBroadPhase_ = BroadPhaseStats{};
+        broadPhase_.findPairs(aabbs_, movable_, pairs_, lastBroadPhase_);
+        record(trace, q::pairs_tested, -1, double(lastBroadPhase_.pairsTested));
+        record(trace, q::pairs_overlapping, -1, double(lastBroadPhase_.pairsOverlapping));
         for (const auto& [a, b] : pairs_) {
             const std::optional<ContactGeometry> hit = collideBoxBoxSAT(poseOf(a), poseOf(b));
             if (hit) {

@@ -64,6 +64,8 @@ public:
     void restore(const WorldSnapshot& s);
 
     bool runsCollisionStage() const { return boxPairsPossible_ || !scene_.planes.empty(); }
+    // The broad phase's counts in the last step (zero when it did not run).
+    const BroadPhaseStats& lastBroadPhaseStats() const { return lastBroadPhase_; }
 
 private:
     void forcesStage(StepTrace* trace);
@@ -92,6 +94,7 @@ private:
     // Collision stage scratch, kept between steps to avoid allocations.
     bool boxPairsPossible_ = false;
     SweepAndPrune broadPhase_;
+    BroadPhaseStats lastBroadPhase_;
     std::vector<Aabb> aabbs_;
     std::vector<char> movable_;
     std::vector<std::pair<int, int>> pairs_;

@@ -4,6 +4,8 @@
 #include "app/gui/trace_model.h"
 
 #include <QAction>
+
+#include <algorithm>
 #include <QApplication>
 #include <QClipboard>
 #include <QFile>
@@ -110,7 +112,13 @@ void MainWindow::createLayout()
     traceView_->header()->setStretchLastSection(true);
     connect(traceModel_, &QAbstractItemModel::modelReset, traceView_, [this] {
         traceView_->expandAll();
-        for (int c = 0; c < TraceModel::FormulaColumn; ++c) traceView_->resizeColumnToContents(c);
+        for (int c = 0; c < TraceModel::FormulaColumn; ++c) {
+            traceView_->resizeColumnToContents(c);
+            // Long symbols (the J denominator terms) must not push the values off screen.
+            if (c == TraceModel::SymbolColumn) {
+                traceView_->setColumnWidth(c, std::min(traceView_->columnWidth(c), 140));
+            }
+        }
     });
 
     lessonText_ = new QTextBrowser;

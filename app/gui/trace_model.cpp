@@ -12,7 +12,14 @@ namespace {
 
 QString humanName(const TraceEntry& e)
 {
-    QString name = QString::fromLatin1(e.info->id).replace('_', ' ');
+    const QString id = QString::fromLatin1(e.info->id);
+    if (e.info->stage == Stage::Collision) {
+        // Inside a contact's group the index is the group itself.
+        if (id == "x_a" || id == "x_b") return id;
+        if (id == "point") return QObject::tr("contact point");
+        return QString(id).replace('_', ' ').replace(QStringLiteral(" a"), QStringLiteral(" A")).replace(QStringLiteral(" b"), QStringLiteral(" B"));
+    }
+    QString name = QString(id).replace('_', ' ');
     if (e.index >= 0) {
         name += e.info->stage == Stage::Probes ? QStringLiteral(" (probe %1)").arg(e.index)
                                                : QStringLiteral(" #%1").arg(e.index);
@@ -66,7 +73,15 @@ void TraceModel::clear()
 
 bool TraceModel::sameShape(const StepTrace& next) const
 {
-    if (next.entries.size() != trace_.entries.size()) return false;
+    if (next.entries.size() != trace_.entries.size() || next.contacts.size() != trace_.contacts.size()) return false;
+    for (size_t k = 0; k < next.contacts.size(); ++k) {
+        const ContactHeader& a = next.contacts[k];
+        const ContactHeader& b = trace_.contacts[k];
+        if (a.bodyA != b.bodyA || a.bodyB != b.bodyB || a.plane != b.plane || a.separating != b.separating ||
+            a.pointCount != b.pointCount || std::string_view(a.feature) != b.feature) {
+            return false;
+        }
+    }
     for (size_t i = 0; i < next.entries.size(); ++i) {
         const TraceEntry& a = next.entries[i];
         const TraceEntry& b = trace_.entries[i];
@@ -95,8 +110,16 @@ void TraceModel::setTrace(const StepTrace& trace, const SceneDef& scene)
         return;
     }
     beginResetModel();
-    // A new shape: everything present is new relative to nothing shown before.
-    changed_.assign(trace.entries.size(), trace_.entries.empty() ? 0 : 1);
+    // A new shape: a row is "changed" when the previous step had no row with the same
+    // quantity, body and index, or had a different value there.
+    changed_.assign(trace.entries.size(), 0);
+    if (!trace_.entries.empty()) {
+        for (size_t i = 0; i < trace.entries.size(); ++i) {
+            const TraceEntry& e = trace.entries[i];
+            const TraceEntry* before = trace_.find(e.info->id, e.body, e.index);
+            changed_[i] = before == nullptr || before->info->stage != e.info->stage || !sameValue(before->value, e.value);
+        }
+    }
     trace_ = trace;
     rebuild(scene);
     endResetModel();
@@ -118,8 +141,40 @@ void TraceModel::rebuild(const SceneDef& scene)
         return id;
     };
     // Stages in pipeline order, then bodies in scene order, then entries in trace order.
+    // The collision stage groups by contact instead: its world-level counts first, then
+    // one group per contact ("contact 0: A ↔ B · vertex-face").
+    auto bodyOrPlane = [&](int body, int plane) {
+        if (plane >= 0) return QString::fromStdString(scene.planes[plane].name);
+        return body >= 0 ? QString::fromStdString(scene.bodies[body].name) : QString();
+    };
     for (Stage stage : {Stage::Forces, Stage::Integration, Stage::Collision, Stage::Correction, Stage::Probes}) {
         int stageNode = -1;
+        if (stage == Stage::Collision) {
+            for (size_t i = 0; i < trace_.entries.size(); ++i) {
+                const TraceEntry& e = trace_.entries[i];
+                if (e.info->stage != Stage::Collision || e.index >= 0) continue;
+                if (stageNode < 0) stageNode = addChild(0, stageTitle(stage), -1);
+                rowOfEntry_[i] = addChild(stageNode, QString(), static_cast<int>(i));
+            }
+            for (int k = 0; k < static_cast<int>(trace_.contacts.size()); ++k) {
+                const ContactHeader& c = trace_.contacts[k];
+                if (stageNode < 0) stageNode = addChild(0, stageTitle(stage), -1);
+                QString label = tr("contact %1: %2 ↔ %3 · %4")
+                                    .arg(k)
+                                    .arg(bodyOrPlane(c.bodyA, -1), bodyOrPlane(c.bodyB, c.plane),
+                                         QString::fromLatin1(c.feature));
+                if (c.pointCount > 1) label += tr(" · average of %1 corners").arg(c.pointCount);
+                if (c.separating) label += tr(" · separating: no impulse");
+                const int contactNode = addChild(stageNode, label, -1);
+                for (size_t i = 0; i < trace_.entries.size(); ++i) {
+                    const TraceEntry& e = trace_.entries[i];
+                    if (e.info->stage == Stage::Collision && e.index == k) {
+                        rowOfEntry_[i] = addChild(contactNode, QString(), static_cast<int>(i));
+                    }
+                }
+            }
+            continue;
+        }
         for (int body = -1; body < static_cast<int>(scene.bodies.size()); ++body) {
             int bodyNode = -1;
             for (size_t i = 0; i < trace_.entries.size(); ++i) {

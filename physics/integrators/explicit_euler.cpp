@@ -2,6 +2,8 @@
 
 #include "physics/quantities.h"
 
+#include <cmath>
+
 namespace rbw {
 
 void ExplicitEuler::integrate(const IntegrationInput& in, std::vector<BodyState>& states,
@@ -29,9 +31,14 @@ void ExplicitEuler::integrate(const IntegrationInput& in, std::vector<BodyState>
         const Quat omegaQuat(0.0, s.omega_W.x(), s.omega_W.y(), s.omega_W.z());
         const Quat rDot = omegaQuat * s.q_WB;
         s.q_WB.coeffs() += (0.5 * h) * rDot.coeffs();
-        // stableNormalize: |r|^2 would overflow to infinity for (h/2)|omega| > ~1e154 and
-        // a plain normalize() would then silently give the zero quaternion.
-        s.q_WB.coeffs().stableNormalize();
+        // |r|^2 overflows to infinity for (h/2)|omega| > ~1e154, and a plain normalize()
+        // would then silently give the zero quaternion: fall back to the scaled norm.
+        const double norm2 = s.q_WB.squaredNorm();
+        if (std::isfinite(norm2)) {
+            s.q_WB.coeffs() /= std::sqrt(norm2);
+        } else {
+            s.q_WB.coeffs().stableNormalize();
+        }
         record(trace, q::orientation, b, s.q_WB);
 
         // Step 5: L <- L + h q
