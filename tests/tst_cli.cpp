@@ -6,23 +6,14 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
+#include "tests/test_support.h"
+
 #include <QtTest>
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QString err;
-};
-
-Run runRbw(const QStringList& args)
-{
-    QProcess p;
-    p.start(QStringLiteral(RBW_CLI_PATH), args);
-    p.waitForFinished(120000);
-    return Run{p.exitCode(), p.readAllStandardOutput(), QString::fromUtf8(p.readAllStandardError())};
-}
+using Run = rbw::test::RbwRun;
+using rbw::test::runRbw;
 
 const QString kLesson1 = QStringLiteral(RBW_SOURCE_DIR "/lessons/01-one-step/scene.json");
 

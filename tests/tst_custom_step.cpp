@@ -33,6 +33,8 @@
 // p - x, no renormalisation) change them by 1e-3 or more, so 1e-12 is tight and still
 // has four orders of headroom.
 
+#include "tests/test_support.h"
+
 #include <QtTest>
 
 #include "physics/quantities.h"
@@ -51,69 +53,8 @@ using rbw::Mat3;
 using rbw::Quat;
 using rbw::Vec3;
 
-// Flattens a trace value: scalar -> 1 entry, Vec3 -> (x, y, z), quaternion ->
-// (w, x, y, z), Mat3 -> 9 entries row by row.
-QList<double> flatten(const rbw::TraceValue& value)
-{
-    return std::visit(
-        [](const auto& v) -> QList<double> {
-            using T = std::decay_t<decltype(v)>;
-            if constexpr (std::is_same_v<T, double>) {
-                return {v};
-            } else if constexpr (std::is_same_v<T, Vec3>) {
-                return {v.x(), v.y(), v.z()};
-            } else if constexpr (std::is_same_v<T, Quat>) {
-                return {v.w(), v.x(), v.y(), v.z()};
-            } else {
-                QList<double> out;
-                for (int i = 0; i < 3; ++i) {
-                    for (int j = 0; j < 3; ++j) {
-                        out << v(i, j);
-                    }
-                }
-                return out;
-            }
-        },
-        value);
-}
+using namespace rbw::test;
 
-QList<double> flat(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-QList<double> flat(const Quat& q) { return {q.w(), q.x(), q.y(), q.z()}; }
-
-QString listText(const QList<double>& v)
-{
-    QStringList parts;
-    for (double d : v) {
-        parts << QString::number(d, 'g', 17);
-    }
-    return QLatin1Char('(') + parts.join(QStringLiteral(", ")) + QLatin1Char(')');
-}
-
-// Empty when |a_i - e_i| <= relTol * max_j |e_j| for all i (relTol = 0: exact ==).
-QString mismatch(const QList<double>& actual, const QList<double>& expected, double relTol)
-{
-    if (actual.size() != expected.size()) {
-        return QStringLiteral("size %1, expected %2").arg(actual.size()).arg(expected.size());
-    }
-    double scale = 0.0;
-    for (double e : expected) {
-        scale = std::max(scale, std::abs(e));
-    }
-    const double allowed = relTol * scale;
-    for (int i = 0; i < actual.size(); ++i) {
-        const double diff = std::abs(actual[i] - expected[i]);
-        if (!(diff <= allowed)) {
-            return QStringLiteral("entry %1: got %2, expected %3 (|diff| = %4 > %5)\n  actual   %6\n  expected %7")
-                .arg(i)
-                .arg(actual[i], 0, 'g', 17)
-                .arg(expected[i], 0, 'g', 17)
-                .arg(diff, 0, 'g', 3)
-                .arg(allowed, 0, 'g', 3)
-                .arg(listText(actual), listText(expected));
-        }
-    }
-    return {};
-}
 
 constexpr double kExact = 0.0;
 constexpr double kRel = 1e-12;

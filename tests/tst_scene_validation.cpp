@@ -4,6 +4,8 @@
 // rbw binary, plus a negative control: the valid base scene runs with status 0.
 #include <QProcess>
 #include <QTemporaryDir>
+#include "tests/test_support.h"
+
 #include <QtTest>
 
 namespace {
@@ -22,20 +24,8 @@ const char* const kBase = R"({
   "probes": [ { "body": "b", "point": [3.5, 0, 0] } ]
 })";
 
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-Run runRbw(const QStringList& args)
-{
-    QProcess p;
-    p.start(QStringLiteral(RBW_CLI_PATH), args);
-    p.waitForFinished(60000);
-    return Run{p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
-               QString::fromUtf8(p.readAllStandardError())};
-}
+using Run = rbw::test::RbwRun;
+using rbw::test::runRbw;
 
 } // namespace
 
@@ -166,7 +156,7 @@ void TestSceneValidation::badOption()
     QFETCH(QString, message);
     const Run r = runRbw(QStringList{"run", write(kBase)} + options);
     QCOMPARE(r.exitCode, 2);
-    QVERIFY2(r.out.isEmpty(), qPrintable(r.out));
+    QVERIFY2(r.out.isEmpty(), r.out.constData());
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
 }
 

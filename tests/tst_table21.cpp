@@ -19,6 +19,8 @@
 // Table 2.1 (to +-5e-7) where the table prints one, so a slip in a derivation below
 // cannot pass silently.
 
+#include "tests/test_support.h"
+
 #include <QtTest>
 
 #include "app/core/scene_loader.h"
@@ -38,67 +40,8 @@ using rbw::Mat3;
 using rbw::Quat;
 using rbw::Vec3;
 
-// Flattens a trace value: a scalar -> 1 entry, a Vec3 -> (x, y, z), a quaternion ->
-// (w, x, y, z), a Mat3 -> its 9 entries row by row.
-QList<double> flatten(const rbw::TraceValue& value)
-{
-    return std::visit(
-        [](const auto& v) -> QList<double> {
-            using T = std::decay_t<decltype(v)>;
-            if constexpr (std::is_same_v<T, double>) {
-                return {v};
-            } else if constexpr (std::is_same_v<T, Vec3>) {
-                return {v.x(), v.y(), v.z()};
-            } else if constexpr (std::is_same_v<T, Quat>) {
-                return {v.w(), v.x(), v.y(), v.z()};
-            } else {
-                QList<double> out;
-                for (int i = 0; i < 3; ++i) {
-                    for (int j = 0; j < 3; ++j) {
-                        out << v(i, j);
-                    }
-                }
-                return out;
-            }
-        },
-        value);
-}
+using namespace rbw::test;
 
-QString listText(const QList<double>& v)
-{
-    QStringList parts;
-    for (double d : v) {
-        parts << QString::number(d, 'g', 17);
-    }
-    return QLatin1Char('(') + parts.join(QStringLiteral(", ")) + QLatin1Char(')');
-}
-
-// Empty when |a_i - e_i| <= relTol * max_j |e_j| for all i (relTol = 0: exact ==),
-// otherwise a readable description of the first mismatch.
-QString mismatch(const QList<double>& actual, const QList<double>& expected, double relTol)
-{
-    if (actual.size() != expected.size()) {
-        return QStringLiteral("size %1, expected %2").arg(actual.size()).arg(expected.size());
-    }
-    double scale = 0.0;
-    for (double e : expected) {
-        scale = std::max(scale, std::abs(e));
-    }
-    const double allowed = relTol * scale;
-    for (int i = 0; i < actual.size(); ++i) {
-        const double diff = std::abs(actual[i] - expected[i]);
-        if (!(diff <= allowed)) {
-            return QStringLiteral("entry %1: got %2, expected %3 (|diff| = %4 > %5)\n  actual   %6\n  expected %7")
-                .arg(i)
-                .arg(actual[i], 0, 'g', 17)
-                .arg(expected[i], 0, 'g', 17)
-                .arg(diff, 0, 'g', 3)
-                .arg(allowed, 0, 'g', 3)
-                .arg(listText(actual), listText(expected));
-        }
-    }
-    return {};
-}
 
 // The scene of Table 2.1, built in code.
 rbw::SceneDef table21Scene()

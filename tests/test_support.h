@@ -1,0 +1,100 @@
+// Helpers shared by the tests: compare trace values against hand-derived numbers,
+// and run the rbw command line.
+#pragma once
+
+#include "physics/trace.h"
+
+#include <QList>
+#include <QProcess>
+#include <QString>
+#include <QStringList>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rbw::test {
+
+using rbw::Mat3;
+using rbw::Quat;
+using rbw::Vec3;
+
+// Flattens a trace value: scalar -> 1 entry, Vec3 -> (x, y, z), quaternion ->
+// (w, x, y, z), Mat3 -> 9 entries row by row.
+inline QList<double> flatten(const rbw::TraceValue& value)
+{
+    return std::visit(
+        [](const auto& v) -> QList<double> {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, double>) {
+                return {v};
+            } else if constexpr (std::is_same_v<T, Vec3>) {
+                return {v.x(), v.y(), v.z()};
+            } else if constexpr (std::is_same_v<T, Quat>) {
+                return {v.w(), v.x(), v.y(), v.z()};
+            } else {
+                QList<double> out;
+                for (int i = 0; i < 3; ++i) {
+                    for (int j = 0; j < 3; ++j) {
+                        out << v(i, j);
+                    }
+                }
+                return out;
+            }
+        },
+        value);
+}
+
+inline QList<double> flat(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+inline QList<double> flat(const Quat& q) { return {q.w(), q.x(), q.y(), q.z()}; }
+
+inline QString listText(const QList<double>& v)
+{
+    QStringList parts;
+    for (double d : v) {
+        parts << QString::number(d, 'g', 17);
+    }
+    return QLatin1Char('(') + parts.join(QStringLiteral(", ")) + QLatin1Char(')');
+}
+
+// Empty when |a_i - e_i| <= relTol * max_j |e_j| for all i (relTol = 0: exact ==).
+inline QString mismatch(const QList<double>& actual, const QList<double>& expected, double relTol)
+{
+    if (actual.size() != expected.size()) {
+        return QStringLiteral("size %1, expected %2").arg(actual.size()).arg(expected.size());
+    }
+    double scale = 0.0;
+    for (double e : expected) {
+        scale = std::max(scale, std::abs(e));
+    }
+    const double allowed = relTol * scale;
+    for (int i = 0; i < actual.size(); ++i) {
+        const double diff = std::abs(actual[i] - expected[i]);
+        if (!(diff <= allowed)) {
+            return QStringLiteral("entry %1: got %2, expected %3 (|diff| = %4 > %5)\n  actual   %6\n  expected %7")
+                .arg(i)
+                .arg(actual[i], 0, 'g', 17)
+                .arg(expected[i], 0, 'g', 17)
+                .arg(diff, 0, 'g', 3)
+                .arg(allowed, 0, 'g', 3)
+                .arg(listText(actual), listText(expected));
+        }
+    }
+    return {};
+}
+
+// What one run of rbw returned.
+struct RbwRun {
+    int exitCode = -1;
+    QByteArray out;
+    QString err;
+};
+
+inline RbwRun runRbw(const QStringList& args)
+{
+    QProcess p;
+    p.start(QStringLiteral(RBW_CLI_PATH), args);
+    p.waitForFinished(120000);
+    return RbwRun{p.exitCode(), p.readAllStandardOutput(), QString::fromUtf8(p.readAllStandardError())};
+}
+
+} // namespace rbw::test
