@@ -126,6 +126,13 @@ inline constexpr QuantityInfo friction_impulse{
     "friction_impulse", Stage::Collision, "J_t\\,\\mathbf{t}", "J_t t",
     "J_t = \\min\\!\\Big(\\frac{|\\mathbf{v}_{\\text{rel},t}|}{\\tfrac{1}{M_A} + \\tfrac{1}{M_B} + [\\cdot]_{A,t} + [\\cdot]_{B,t}},\\ \\mu J\\Big)",
     Frame::World, "N·s"};
+inline constexpr QuantityInfo friction_coefficient{
+    "friction_coefficient", Stage::Collision, "\\mu", "μ", "\\mu\\ \\text{(Coulomb friction coefficient)}",
+    Frame::None, ""};
+inline constexpr QuantityInfo sliding{
+    "sliding", Stage::Collision, "s", "sliding",
+    "s = 1\\ \\text{if}\\ J_t^{*} > \\mu J\\ \\text{(slides, } J_t = \\mu J),\\ 0\\ \\text{if it sticks}",
+    Frame::None, ""};
 inline constexpr QuantityInfo delta_v_a{
     "delta_v_a", Stage::Collision, "\\Delta\\mathbf{v}_A", "Δv_A",
     "\\Delta\\mathbf{v}_A = (J\\,\\mathbf{n} + J_t\\mathbf{t})/M_A", Frame::World, "m/s"};

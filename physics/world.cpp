@@ -271,7 +271,11 @@ void World::resolveContact(const ContactGeometry& g, int a, int b, int plane, co
     trace->add(q::rotational_b, b, r.rotationalB, k);
     trace->add(q::denominator, a, r.denominator, k);
     trace->add(q::impulse, a, r.J, k);
-    if (r.mu > 0.0) trace->add(q::friction_impulse, a, r.frictionImpulse_W, k);
+    if (r.mu > 0.0) {
+        trace->add(q::friction_coefficient, a, r.mu, k);
+        trace->add(q::friction_impulse, a, r.frictionImpulse_W, k);
+        trace->add(q::sliding, a, r.frictionClamped ? 1.0 : 0.0, k);
+    }
     trace->add(q::delta_v_a, a, r.dv_A, k);
     trace->add(q::delta_L_a, a, r.dL_A, k);
     trace->add(q::linear_velocity_a, a, states_[a].v_W, k);

@@ -113,6 +113,20 @@ void TestSceneValidation::badScene_data()
                                 << "steps: must be a number, got a string";
     QTest::newRow("vector of 2") << "[0, -9.81, 0]" << "[0, -9.81]"
                                  << "gravity: must be an array of 3 numbers, got 2 elements";
+    QTest::newRow("restitution above 1") << R"("integrator": "explicit-euler",)" << R"("integrator": "explicit-euler", "restitution": 1.5,)"
+                                         << "restitution: must be a number from 0 to 1, got 1.5";
+    QTest::newRow("negative friction") << R"("integrator": "explicit-euler",)" << R"("integrator": "explicit-euler", "friction": -0.1,)"
+                                       << "friction: must be >= 0, got -0.1";
+    QTest::newRow("zero plane normal") << R"("gravity": [0, -9.81, 0],)"
+                                       << R"("gravity": [0, -9.81, 0], "planes": [{"name": "ground", "point": [0,0,0], "normal": [0,0,0]}],)"
+                                       << "planes[0].normal: must not be the zero vector";
+    QTest::newRow("pair with one body twice") << R"("probes")" << R"("pairs": [{"bodies": ["a", "a"], "restitution": 0.5}], "probes")"
+                                              << R"(pairs[0].bodies: names "a" twice)";
+    QTest::newRow("pair listed twice") << R"("probes")"
+                                       << R"("pairs": [{"bodies": ["a", "b"], "friction": 0.5}, {"bodies": ["b", "a"], "restitution": 0.2}], "probes")"
+                                       << "pairs[1].bodies: this pair is already listed";
+    QTest::newRow("unknown plane mode") << R"("integrator": "explicit-euler",)" << R"("integrator": "explicit-euler", "plane_contacts": "mean",)"
+                                        << R"(plane_contacts: must be "per-point" or "average", got "mean")";
     QTest::newRow("force window empty") << R"("force": [1, 1, 0] })" << R"("force": [1, 1, 0], "from_step": 3, "to_step": 3 })"
                                         << "forces[0].to_step: must be greater than from_step";
 }

@@ -317,6 +317,17 @@ PairOverride toPair(const SceneDef& scene, const QJsonValue& v, const QString& p
     if (pair.bodyB < 0 && pair.planeB < 0) {
         throw FieldError{bp + "[1]", QStringLiteral("no body or plane named \"%1\"").arg(second)};
     }
+    if (pair.planeB < 0 && pair.bodyB == pair.bodyA) {
+        throw FieldError{bp, QStringLiteral("names \"%1\" twice; a pair needs two different bodies").arg(first)};
+    }
+    for (const PairOverride& other : scene.pairs) {
+        const bool same = pair.planeB >= 0 ? (other.planeB == pair.planeB && other.bodyA == pair.bodyA)
+                                           : (other.planeB < 0 && ((other.bodyA == pair.bodyA && other.bodyB == pair.bodyB) ||
+                                                                   (other.bodyA == pair.bodyB && other.bodyB == pair.bodyA)));
+        if (same) {
+            throw FieldError{bp, QStringLiteral("this pair is already listed; give each pair once")};
+        }
+    }
     if (!o.contains("restitution") && !o.contains("friction")) {
         throw FieldError{path, QStringLiteral("give \"restitution\", \"friction\" or both")};
     }
