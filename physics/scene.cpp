@@ -149,6 +149,7 @@ std::vector<SceneIssue> validate(const SceneDef& scene)
     };
     checkCoefficient("restitution", scene.restitution, 1.0);
     checkCoefficient("friction", scene.friction, std::numeric_limits<double>::infinity());
+    checkCoefficient("restitution_threshold", scene.restitutionThreshold, std::numeric_limits<double>::infinity());
     for (size_t i = 0; i < scene.planes.size(); ++i) {
         const PlaneDef& p = scene.planes[i];
         const std::string at = "planes[" + std::to_string(i) + "]";

@@ -66,6 +66,9 @@ struct SceneDef {
     bool boxCollisions = true;             // box-box contacts between the bodies
     double restitution = 1.0;              // c, scene-wide
     double friction = 0.0;                 // mu, scene-wide
+    // Approach speeds below this are resolved plastically (c = 0), so resting contact
+    // stops micro-bouncing (Box2D's b2_velocityThreshold). 0: off, the course's model.
+    double restitutionThreshold = 0.0;     // [m/s]
     std::vector<PairOverride> pairs;
     bool positionCorrection = false;       // push penetrating bodies apart after the impulses
     PlaneContactMode planeContacts = PlaneContactMode::PerPoint;

@@ -224,7 +224,13 @@ void World::resolveContact(const ContactGeometry& g, int a, int b, int plane, co
     if (b >= 0) {
         B = ResponseBody{&states_[b], &mass_[b], scene_.bodies[b].angularResponse};
     }
-    const double c = scene_.restitutionFor(a, b, plane);
+    double c = scene_.restitutionFor(a, b, plane);
+    if (scene_.restitutionThreshold > 0.0) {
+        // Resting contact: an approach slower than the threshold does not bounce.
+        const Vec3 vA = pointVelocity(states_[a], g.p_W);
+        const Vec3 vB = b >= 0 ? pointVelocity(states_[b], g.p_W) : Vec3::Zero();
+        if (-(vA - vB).dot(g.n_W) < scene_.restitutionThreshold) c = 0.0;
+    }
     const double mu = scene_.frictionFor(a, b, plane);
     const ImpulseResult r = applyContactImpulse(g, A, B, c, mu, scene_.inertiaConvention);
 

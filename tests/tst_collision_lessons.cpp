@@ -58,6 +58,7 @@ private slots:
     void lesson4TwentySeconds();
     void napierImpulses_data();
     void napierImpulses();
+    void frictionBringsCuboidToRest();
     void freeBodyHasNoCollisionStage();
 };
 
@@ -210,6 +211,31 @@ void TestCollisionLessons::napierImpulses()
     QVERIFY(w.step().ok);                                          // step 200: the impulse
     QVERIFY(near(w.states()[body].v_W, Vec3(vx, 0, 0), 1e-9));
     QVERIFY(near(w.states()[body].omega_W, Vec3(0, 0, omegaZ), 1e-9));
+}
+
+void TestCollisionLessons::frictionBringsCuboidToRest()
+{
+    // Napier assessment: c = 0.6 with mu = 0.5 brings the bouncing cuboid to rest. With
+    // impulse-only contact a resting box micro-bounces (each step gravity gives it
+    // v_y = -g h = -0.049 m/s, which bounces back at 0.6 of that) and friction acts only
+    // every other step, so it creeps. The scene's restitution_threshold (0.5 m/s) makes
+    // slow approaches plastic; then the horizontal speed dies out.
+    SceneDef scene = lessonScene("07-bounce/scene.json");
+    QCOMPARE(scene.restitutionThreshold, 0.5);
+    const int body = scene.bodyIndex("friction");
+    auto horizontalSpeedAfter12s = [&](const SceneDef& s) {
+        World w(s);
+        for (int k = 0; k < 2400; ++k) {
+            if (!w.step().ok) qFatal("blew up");
+        }
+        const Vec3 v = w.states()[body].v_W;
+        return std::hypot(v.x(), v.z());
+    };
+    const double withThreshold = horizontalSpeedAfter12s(scene);
+    QVERIFY2(withThreshold < 0.01, qPrintable(QString("still sliding at %1 m/s").arg(withThreshold)));
+    // Negative control: without the threshold the same cuboid is still creeping.
+    scene.restitutionThreshold = 0.0;
+    QVERIFY(horizontalSpeedAfter12s(scene) > 0.01);
 }
 
 void TestCollisionLessons::freeBodyHasNoCollisionStage()

@@ -340,7 +340,8 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
 {
     checkKeys(o, QString(), {"name", "description", "dt", "steps", "integrator", "inertia_convention",
                              "gravity", "bodies", "forces", "probes", "planes", "box_collisions",
-                             "restitution", "friction", "pairs", "position_correction", "plane_contacts"});
+                             "restitution", "restitution_threshold", "friction", "pairs", "position_correction",
+                             "plane_contacts"});
     SceneDef s;
     s.name = o.contains("name") ? toString(o.value("name"), "name").toStdString()
                                 : QFileInfo(fileLabel).completeBaseName().toStdString();
@@ -401,6 +402,9 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
     if (o.contains("box_collisions")) s.boxCollisions = toBool(o.value("box_collisions"), "box_collisions");
     if (o.contains("restitution")) s.restitution = coefficient(o.value("restitution"), "restitution", true);
     if (o.contains("friction")) s.friction = coefficient(o.value("friction"), "friction", false);
+    if (o.contains("restitution_threshold")) {
+        s.restitutionThreshold = coefficient(o.value("restitution_threshold"), "restitution_threshold", false);
+    }
     if (o.contains("pairs")) {
         const QJsonArray pairs = toArray(o.value("pairs"), "pairs");
         for (int i = 0; i < pairs.size(); ++i) {
