@@ -2,6 +2,7 @@
 // and run the rbw command line.
 #pragma once
 
+#include "physics/collision/contact.h"
 #include "physics/trace.h"
 
 #include <QList>
@@ -80,6 +81,16 @@ inline QString mismatch(const QList<double>& actual, const QList<double>& expect
         }
     }
     return {};
+}
+
+// An oriented box: centre, rotation (body axes as columns), half extents.
+inline BoxPose box(const Vec3& c, const Mat3& R, const Vec3& h)
+{
+    BoxPose b;
+    b.c_W = c;
+    b.R_WB = R;
+    b.halfExtents = h;
+    return b;
 }
 
 // What one run of rbw returned.

@@ -7,6 +7,8 @@
 // bounds of the 8 corners (another rounding order) they agree to a few 1e-16 of the
 // box size (<= 10 here): 1e-12 absolute. Pair sets and counters are integers: exact.
 
+#include "tests/test_support.h"
+
 #include <QtTest>
 
 #include "physics/collision/broad_phase.h"
@@ -31,14 +33,7 @@ using rbw::Vec3;
 
 using PairList = std::vector<std::pair<int, int>>;
 
-BoxPose box(const Vec3& c, const Mat3& R, const Vec3& h)
-{
-    BoxPose b;
-    b.c_W = c;
-    b.R_WB = R;
-    b.halfExtents = h;
-    return b;
-}
+using rbw::test::box;
 
 // Independent overlap test, written out per axis (touching counts).
 bool overlapsOn(const Aabb& a, const Aabb& b, int k) { return a.min_W[k] <= b.max_W[k] && b.min_W[k] <= a.max_W[k]; }

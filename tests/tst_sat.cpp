@@ -22,6 +22,8 @@
 // case shifted to touching, the template's case 1) use tolerance 0: touching there is
 // exact, and the depth must come out exactly 0.
 
+#include "tests/test_support.h"
+
 #include <QtTest>
 
 #include "physics/collision/box_box_sat.h"
@@ -52,14 +54,7 @@ Mat3 rotation(double angle, const Vec3& axis)
     return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
 }
 
-BoxPose box(const Vec3& c, const Mat3& R, const Vec3& h)
-{
-    BoxPose b;
-    b.c_W = c;
-    b.R_WB = R;
-    b.halfExtents = h;
-    return b;
-}
+using rbw::test::box;
 
 BoxPose unitCube(const Vec3& c, const Mat3& R = Mat3::Identity())
 {
