@@ -44,6 +44,9 @@ inline constexpr QuantityInfo angular_momentum{
 inline constexpr QuantityInfo inertia_body{
     "inertia_body", Stage::Integration, "I_0", "I₀",
     "I_0 = \\tfrac{M}{12}\\operatorname{diag}(b^2+c^2,\\ a^2+c^2,\\ a^2+b^2)", Frame::Body, "kg·m²"};
+inline constexpr QuantityInfo inverse_inertia_body{
+    "inverse_inertia_body", Stage::Integration, "I_0^{-1}", "I₀⁻¹",
+    "I_0^{-1} = \\operatorname{diag}(1/I_{0,xx},\\ 1/I_{0,yy},\\ 1/I_{0,zz})", Frame::Body, "1/(kg·m²)"};
 inline constexpr QuantityInfo rotation_matrix{
     "rotation_matrix", Stage::Integration, "R", "R", "R = R(r)", Frame::World, ""};
 inline constexpr QuantityInfo inverse_inertia_world{

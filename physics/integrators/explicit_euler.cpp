@@ -49,6 +49,7 @@ void ExplicitEuler::integrate(const IntegrationInput& in, std::vector<BodyState>
         updateDerived(mp, s, in.convention);
         if (trace != nullptr) {
             trace->add(q::inertia_body, b, mp.I0_B);
+            trace->add(q::inverse_inertia_body, b, mp.I0inv_B);
             trace->add(q::rotation_matrix, b, s.R_WB);
             trace->add(in.convention == InertiaConvention::CourseTemplate
                            ? q::inverse_inertia_world_template
