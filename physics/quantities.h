@@ -23,6 +23,11 @@ inline constexpr QuantityInfo force{
 inline constexpr QuantityInfo force_with_gravity{
     "force", Stage::Forces, "\\mathbf{F}", "F", "\\mathbf{F} = \\sum_i \\mathbf{f}_i + M\\,\\mathbf{g}",
     Frame::World, "N"};
+inline constexpr QuantityInfo applied_torque{
+    "applied_torque", Stage::Forces, "\\mathbf{q}_j", "qⱼ", "\\mathbf{q}_j", Frame::World, "N·m"};
+inline constexpr QuantityInfo torque_with_couples{
+    "torque", Stage::Forces, "\\mathbf{q}", "q",
+    "\\mathbf{q} = \\sum_i \\mathbf{x}_i \\times \\mathbf{f}_i + \\sum_j \\mathbf{q}_j", Frame::World, "N·m"};
 inline constexpr QuantityInfo torque{
     "torque", Stage::Forces, "\\mathbf{q}", "q", "\\mathbf{q} = \\sum_i \\mathbf{x}_i \\times \\mathbf{f}_i",
     Frame::World, "N·m"};

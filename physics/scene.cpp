@@ -141,6 +141,35 @@ std::vector<SceneIssue> validate(const SceneDef& scene)
             out.push_back({at + ".to_step", "must be greater than from_step"});
         }
     }
+    for (size_t i = 0; i < scene.torques.size(); ++i) {
+        const TorqueDef& t = scene.torques[i];
+        const std::string at = "torques[" + std::to_string(i) + "]";
+        if (t.body < 0 || t.body >= nBodies) {
+            out.push_back({at + ".body", "names no body of the scene"});
+        } else if (scene.bodies[t.body].fixed) {
+            out.push_back({at + ".body", "body \"" + scene.bodies[t.body].name +
+                                             "\" is fixed; a torque on it has no effect"});
+        }
+        requireFinite(out, at + ".torque", t.q_W);
+        if (t.fromStep < 0) {
+            out.push_back({at + ".from_step", "must be >= 0"});
+        }
+        if (t.toStep <= t.fromStep) {
+            out.push_back({at + ".to_step", "must be greater than from_step"});
+        }
+    }
+    if (scene.push.body >= nBodies) {
+        out.push_back({"push.body", "names no body of the scene"});
+    } else if (scene.push.body >= 0) {
+        if (scene.bodies[scene.push.body].fixed) {
+            out.push_back({"push.body", "body \"" + scene.bodies[scene.push.body].name +
+                                            "\" is fixed; pushing it has no effect"});
+        }
+        requireFinite(out, "push.point", scene.push.p_B);
+        if (!(std::isfinite(scene.push.magnitude) && scene.push.magnitude > 0.0)) {
+            out.push_back({"push.force", "must be a finite number > 0, got " + num(scene.push.magnitude)});
+        }
+    }
     auto checkCoefficient = [&](const std::string& path, double x, double hi) {
         if (!(std::isfinite(x) && x >= 0.0 && x <= hi)) {
             out.push_back({path, hi == 1.0 ? "must be a number from 0 to 1, got " + num(x)

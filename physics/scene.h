@@ -30,6 +30,30 @@ struct ForceDef {
     bool activeIn(long k) const { return fromStep <= k && k < toStep; }
 };
 
+// A pure couple: a torque q on a body, acting in steps fromStep <= k < toStep. It
+// changes L (L <- L + h q) and nothing else; on a cube, whose I is a multiple of the
+// identity, it is a constant angular acceleration alpha = I^-1 q (Napier practical 6,
+// task 2). A switchable torque can be turned off and on while the scene runs (the
+// app's K key); off, the body keeps the angular velocity it has.
+struct TorqueDef {
+    int body = -1;
+    Vec3 q_W = Vec3::Zero();         // torque, world frame
+    long fromStep = 0;
+    long toStep = 1;                 // exclusive
+    bool switchable = false;
+    bool enabledAtStart = true;
+
+    bool activeIn(long k) const { return fromStep <= k && k < toStep; }
+};
+
+// The keyboard push of an interactive lesson: a force of the given magnitude along a
+// world axis, applied for one step at a point fixed to the body.
+struct PushDef {
+    int body = -1;                   // -1: the scene has no keyboard pushes
+    Vec3 p_B = Vec3::Zero();         // point of application, body frame
+    double magnitude = 1.0;          // [N]
+};
+
 struct ProbeDef {
     int body = -1;
     Vec3 p0_W = Vec3::Zero();        // world position at t = 0; moves with its body
@@ -59,7 +83,9 @@ struct SceneDef {
     Vec3 g_W = Vec3::Zero();
     std::vector<BodyDef> bodies;
     std::vector<ForceDef> forces;
+    std::vector<TorqueDef> torques;
     std::vector<ProbeDef> probes;
+    PushDef push;
 
     // Collisions (reference.md sections 2-4).
     std::vector<PlaneDef> planes;          // fixed planes: ground and walls

@@ -34,6 +34,9 @@ World::World(SceneDef scene)
     }
     // Box-box contacts need two bodies, at least one of them movable.
     boxPairsPossible_ = scene_.boxCollisions && n >= 2 && movableCount >= 1;
+    for (const TorqueDef& t : scene_.torques) {
+        torqueEnabled_.push_back(!t.switchable || t.enabledAtStart ? 1 : 0);
+    }
     for (const ProbeDef& p : scene_.probes) {
         const BodyState& s = states_[p.body];
         // p_B = R0^T (p0 - x0): the probe's fixed offset in the body frame
@@ -50,6 +53,34 @@ void World::applyForceOnce(int body, const Vec3& p_W, const Vec3& f_W)
     f.fromStep = stepIndex_;
     f.toStep = stepIndex_ + 1;
     onceForces_.push_back(f);
+}
+
+void World::setTorqueEnabled(int i, bool on)
+{
+    assert(i >= 0 && i < static_cast<int>(torqueEnabled_.size()));
+    if (scene_.torques[i].switchable) {
+        torqueEnabled_[i] = on ? 1 : 0;
+    }
+}
+
+bool World::hasSwitchableTorque() const
+{
+    return std::any_of(scene_.torques.begin(), scene_.torques.end(),
+                       [](const TorqueDef& t) { return t.switchable; });
+}
+
+Vec3 World::bodyToWorld(int body, const Vec3& p_B) const
+{
+    const BodyState& s = states_[body];
+    // p_W = x + R p_B
+    return s.x_W + s.R_WB * p_B;
+}
+
+Vec3 World::worldToBody(int body, const Vec3& p_W) const
+{
+    const BodyState& s = states_[body];
+    // p_B = R^T (p_W - x)
+    return s.R_WB.transpose() * (p_W - s.x_W);
 }
 
 StepStatus World::step(StepTrace* trace)
@@ -147,13 +178,27 @@ void World::forcesStage(StepTrace* trace)
         applyOne(f, index++);
     }
 
+    // Pure couples q_j: they add to the torque and not to the force,
+    //   q = sum x_i x f_i + sum q_j.
+    for (int j = 0; j < static_cast<int>(scene_.torques.size()); ++j) {
+        const TorqueDef& t = scene_.torques[j];
+        if (!t.activeIn(k) || !torqueEnabled_[j]) {
+            continue;
+        }
+        loads_[t.body].q_W += t.q_W;
+        if (trace != nullptr) {
+            trace->add(q::applied_torque, t.body, t.q_W, j);
+            loaded[t.body] = 1;
+        }
+    }
+
     if (trace != nullptr) {
         for (int b = 0; b < n; ++b) {
             if (!loaded[b]) {
                 continue;
             }
             trace->add(gravity ? q::force_with_gravity : q::force, b, loads_[b].F_W);
-            trace->add(q::torque, b, loads_[b].q_W);
+            trace->add(scene_.torques.empty() ? q::torque : q::torque_with_couples, b, loads_[b].q_W);
         }
     }
 }
@@ -409,12 +454,15 @@ StepStatus World::describeBlowUp() const
 
 WorldSnapshot World::snapshot() const
 {
-    return WorldSnapshot{states_, stepIndex_, time_, status_};
+    return WorldSnapshot{states_, torqueEnabled_, stepIndex_, time_, status_};
 }
 
 void World::restore(const WorldSnapshot& s)
 {
     states_ = s.states;
+    if (s.torqueEnabled.size() == torqueEnabled_.size()) {
+        torqueEnabled_ = s.torqueEnabled;
+    }
     stepIndex_ = s.stepIndex;
     time_ = s.time;
     status_ = s.status;

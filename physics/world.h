@@ -31,6 +31,7 @@ struct ProbeReading {
 // Everything needed to put a world back exactly as it was (history, step back).
 struct WorldSnapshot {
     std::vector<BodyState> states;
+    std::vector<char> torqueEnabled;   // switchable torques' on/off state
     long stepIndex = 0;
     double time = 0.0;
     StepStatus status;
@@ -51,6 +52,16 @@ public:
 
     // Adds a force that acts in the next step only (interaction: drag, key pushes).
     void applyForceOnce(int body, const Vec3& p_W, const Vec3& f_W);
+
+    // Switchable torques (TorqueDef::switchable): on or off from the next step on.
+    // Off, the body keeps its angular momentum, so it spins on at the same rate.
+    void setTorqueEnabled(int i, bool on);
+    bool torqueEnabled(int i) const { return torqueEnabled_[i] != 0; }
+    bool hasSwitchableTorque() const;
+
+    // A point fixed to a body: body frame -> world frame (p_W = x + R p_B) and back.
+    Vec3 bodyToWorld(int body, const Vec3& p_B) const;
+    Vec3 worldToBody(int body, const Vec3& p_W) const;
 
     // Advances by one step of size dt. With a trace, records every intermediate
     // quantity and the diagnostics after the step. After a blow-up the world refuses
@@ -89,6 +100,7 @@ private:
     std::vector<BodyState> states_;
     std::vector<BodyLoad> loads_;
     std::vector<ForceDef> onceForces_;
+    std::vector<char> torqueEnabled_;
     std::vector<char> loaded_;           // forces stage scratch: which bodies carry a load
 
     // Collision stage scratch, kept between steps to avoid allocations.

@@ -2,6 +2,7 @@
 // and run the rbw command line.
 #pragma once
 
+#include "app/core/scene_loader.h"
 #include "physics/collision/contact.h"
 #include "physics/trace.h"
 
@@ -18,6 +19,15 @@ namespace rbw::test {
 using rbw::Mat3;
 using rbw::Quat;
 using rbw::Vec3;
+
+// A lesson's scene from the source tree, e.g. lessonScene("05-spinning/scene.json").
+// A lesson that does not load is a broken test setup, not a failed check: abort.
+inline rbw::SceneDef lessonScene(const QString& relative)
+{
+    const rbw::SceneLoadResult r = rbw::loadSceneFile(QStringLiteral(RBW_SOURCE_DIR "/lessons/") + relative);
+    if (!r.ok()) qFatal("%s", qPrintable(r.errors.join('\n')));
+    return *r.scene;
+}
 
 // Flattens a trace value: scalar -> 1 entry, Vec3 -> (x, y, z), quaternion ->
 // (w, x, y, z), Mat3 -> 9 entries row by row.

@@ -4,6 +4,7 @@
 #include "app/core/scene_loader.h"
 #include "physics/quantities.h"
 #include "physics/world.h"
+#include "tests/test_support.h"
 
 #include <QtTest>
 
@@ -11,12 +12,7 @@ using namespace rbw;
 
 namespace {
 
-SceneDef lessonScene(const QString& relative)
-{
-    const SceneLoadResult r = loadSceneFile(QStringLiteral(RBW_SOURCE_DIR "/lessons/") + relative);
-    if (!r.ok()) qFatal("%s", qPrintable(r.errors.join('\n')));
-    return *r.scene;
-}
+using rbw::test::lessonScene;
 
 double value(const StepTrace& t, const char* id, int body, int index)
 {

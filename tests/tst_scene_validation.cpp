@@ -127,6 +127,18 @@ void TestSceneValidation::badScene_data()
                                        << "pairs[1].bodies: this pair is already listed";
     QTest::newRow("unknown plane mode") << R"("integrator": "explicit-euler",)" << R"("integrator": "explicit-euler", "plane_contacts": "mean",)"
                                         << R"(plane_contacts: must be "per-point" or "average", got "mean")";
+    QTest::newRow("torque on unknown body") << R"("probes")" << R"("torques": [{"body": "z", "torque": [0, 1, 0]}], "probes")"
+                                            << R"(torques[0].body: no body named "z")";
+    QTest::newRow("torque missing") << R"("probes")" << R"("torques": [{"body": "a"}], "probes")"
+                                    << R"(torques[0].torque: required field is missing)";
+    QTest::newRow("torque NaN") << R"("probes")" << R"("torques": [{"body": "a", "torque": [0, NaN, 0]}], "probes")"
+                                << R"(torques[0].torque)";
+    QTest::newRow("torque typo") << R"("probes")" << R"("torques": [{"body": "a", "torqe": [0, 1, 0]}], "probes")"
+                                 << R"(torques[0].torqe: unknown key)";
+    QTest::newRow("push force negative") << R"("probes")" << R"("push": {"body": "a", "force": -5}, "probes")"
+                                         << "push.force: must be a finite number > 0, got -5";
+    QTest::newRow("push on unknown body") << R"("probes")" << R"("push": {"body": "q"}, "probes")"
+                                          << R"(push.body: no body named "q")";
     QTest::newRow("force window empty") << R"("force": [1, 1, 0] })" << R"("force": [1, 1, 0], "from_step": 3, "to_step": 3 })"
                                         << "forces[0].to_step: must be greater than from_step";
 }

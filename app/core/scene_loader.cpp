@@ -8,6 +8,7 @@
 #include <QJsonParseError>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace rbw {
@@ -261,6 +262,34 @@ ForceDef toForce(const SceneDef& scene, const QJsonValue& v, const QString& path
     return f;
 }
 
+TorqueDef toTorque(const SceneDef& scene, const QJsonValue& v, const QString& path)
+{
+    const QJsonObject o = toObject(v, path);
+    checkKeys(o, path, {"body", "torque", "from_step", "to_step", "switchable", "enabled"});
+    TorqueDef t;
+    t.body = bodyByName(scene, o, path);
+    t.q_W = toVec3(require(o, path, "torque"), join(path, "torque"));
+    // Lifetime as for forces, except that a torque with neither key lasts for ever:
+    // a couple is usually a motor, not a kick.
+    t.fromStep = o.contains("from_step") ? toInteger(o.value("from_step"), join(path, "from_step")) : 0;
+    t.toStep = o.contains("to_step") ? toInteger(o.value("to_step"), join(path, "to_step"))
+                                     : std::numeric_limits<long>::max();
+    t.switchable = o.contains("switchable") && toBool(o.value("switchable"), join(path, "switchable"));
+    t.enabledAtStart = !o.contains("enabled") || toBool(o.value("enabled"), join(path, "enabled"));
+    return t;
+}
+
+PushDef toPush(const SceneDef& scene, const QJsonValue& v, const QString& path)
+{
+    const QJsonObject o = toObject(v, path);
+    checkKeys(o, path, {"body", "point", "force"});
+    PushDef p;
+    p.body = bodyByName(scene, o, path);
+    p.p_B = o.contains("point") ? toVec3(o.value("point"), join(path, "point")) : Vec3::Zero();
+    p.magnitude = o.contains("force") ? toNumber(o.value("force"), join(path, "force")) : 1.0;
+    return p;
+}
+
 ProbeDef toProbe(const SceneDef& scene, const QJsonValue& v, const QString& path)
 {
     const QJsonObject o = toObject(v, path);
@@ -339,7 +368,7 @@ PairOverride toPair(const SceneDef& scene, const QJsonValue& v, const QString& p
 SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
 {
     checkKeys(o, QString(), {"name", "description", "dt", "steps", "integrator", "inertia_convention",
-                             "gravity", "bodies", "forces", "probes", "planes", "box_collisions",
+                             "gravity", "bodies", "forces", "torques", "push", "probes", "planes", "box_collisions",
                              "restitution", "restitution_threshold", "friction", "pairs", "position_correction",
                              "plane_contacts"});
     SceneDef s;
@@ -380,6 +409,15 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
         for (int i = 0; i < forces.size(); ++i) {
             s.forces.push_back(toForce(s, forces[i], QStringLiteral("forces[%1]").arg(i)));
         }
+    }
+    if (o.contains("torques")) {
+        const QJsonArray torques = toArray(o.value("torques"), "torques");
+        for (int i = 0; i < torques.size(); ++i) {
+            s.torques.push_back(toTorque(s, torques[i], QStringLiteral("torques[%1]").arg(i)));
+        }
+    }
+    if (o.contains("push")) {
+        s.push = toPush(s, o.value("push"), "push");
     }
     if (o.contains("probes")) {
         const QJsonArray probes = toArray(o.value("probes"), "probes");
