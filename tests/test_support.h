@@ -93,6 +93,22 @@ inline QString mismatch(const QList<double>& actual, const QList<double>& expect
     return {};
 }
 
+// A body definition for tests: a box with its initial state (world frame).
+inline rbw::BodyDef boxDef(const char* name, const Vec3& size, double mass, const Vec3& x0,
+                           const Quat& q0 = Quat::Identity(), const Vec3& v0 = Vec3::Zero(),
+                           const Vec3& omega0 = Vec3::Zero())
+{
+    rbw::BodyDef b;
+    b.name = name;
+    b.size = size;
+    b.mass = mass;
+    b.x0_W = x0;
+    b.q0_WB = q0;
+    b.v0_W = v0;
+    b.omega0_W = omega0;
+    return b;
+}
+
 // An oriented box: centre, rotation (body axes as columns), half extents.
 inline BoxPose box(const Vec3& c, const Mat3& R, const Vec3& h)
 {

@@ -9,6 +9,7 @@
 #include "physics/scene.h"
 #include "physics/trace.h"
 #include "physics/world.h"
+#include "tests/test_support.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,19 +33,7 @@ QString vecText(const Vec3& v)
         .arg(v.z(), 0, 'g', 17);
 }
 
-rbw::BodyDef box(const char* name, const Vec3& size, double mass, const Vec3& x0, const Quat& q0,
-                 const Vec3& v0, const Vec3& omega0)
-{
-    rbw::BodyDef b;
-    b.name = name;
-    b.size = size;
-    b.mass = mass;
-    b.x0_W = x0;
-    b.q0_WB = q0;
-    b.v0_W = v0;
-    b.omega0_W = omega0;
-    return b;
-}
+using rbw::test::boxDef;
 
 Quat axisAngle(double angle, const Vec3& axis)
 {
@@ -65,11 +54,11 @@ rbw::SceneDef freeBodies(double dt)
     rbw::SceneDef s;
     s.name = "free bodies";
     s.dt = dt;
-    s.bodies.push_back(box("A", Vec3(1, 2, 3), 1.5, Vec3(1, -2, 0.5), axisAngle(0.7, Vec3(1, 2, 2)),
+    s.bodies.push_back(boxDef("A", Vec3(1, 2, 3), 1.5, Vec3(1, -2, 0.5), axisAngle(0.7, Vec3(1, 2, 2)),
                            Vec3(0.3, -1.2, 0.8), Vec3(1.1, -0.4, 2.3)));
-    s.bodies.push_back(box("B", Vec3(0.5, 0.5, 2), 4.0, Vec3(-3, 1, 2), Quat::Identity(),
+    s.bodies.push_back(boxDef("B", Vec3(0.5, 0.5, 2), 4.0, Vec3(-3, 1, 2), Quat::Identity(),
                            Vec3(-0.5, 0.25, 0), Vec3(0, 3, 0.2)));
-    s.bodies.push_back(box("C", Vec3(2, 1, 1), 0.8, Vec3(0, 0, -4), axisAngle(2.0, Vec3(0, 1, 0)),
+    s.bodies.push_back(boxDef("C", Vec3(2, 1, 1), 0.8, Vec3(0, 0, -4), axisAngle(2.0, Vec3(0, 1, 0)),
                            Vec3(0, 0, 2), Vec3(-5, 0.1, 0.1)));
     return s;
 }
@@ -85,9 +74,9 @@ rbw::SceneDef blowUpScene(double dt, const Vec3& v0, const Vec3& omega0)
     rbw::SceneDef s;
     s.name = "blow-up";
     s.dt = dt;
-    s.bodies.push_back(box("calm", Vec3(1, 1, 1), 1.0, Vec3(5, 0, 0), Quat::Identity(), Vec3::Zero(),
+    s.bodies.push_back(boxDef("calm", Vec3(1, 1, 1), 1.0, Vec3(5, 0, 0), Quat::Identity(), Vec3::Zero(),
                            Vec3::Zero()));
-    s.bodies.push_back(box("spinner", Vec3(1, 1, 1), 6.0, Vec3::Zero(), Quat::Identity(), v0, omega0));
+    s.bodies.push_back(boxDef("spinner", Vec3(1, 1, 1), 6.0, Vec3::Zero(), Quat::Identity(), v0, omega0));
     return s;
 }
 
@@ -237,7 +226,7 @@ void TestInvariants::pureTranslationKeepsKineticEnergy()
     rbw::SceneDef s;
     s.name = "translation";
     s.dt = dt;
-    s.bodies.push_back(box("slider", Vec3(1, 2, 3), mass, Vec3(1, 1, 1), axisAngle(angle, Vec3(1, 2, 2)),
+    s.bodies.push_back(boxDef("slider", Vec3(1, 2, 3), mass, Vec3(1, 1, 1), axisAngle(angle, Vec3(1, 2, 2)),
                            v0, Vec3::Zero()));
     rbw::World world(s);
     const double T0 = world.diagnostics().kinetic;
@@ -294,7 +283,7 @@ void TestInvariants::quaternionStaysUnit()
     rbw::SceneDef s;
     s.name = "spinner";
     s.dt = dt;
-    s.bodies.push_back(box("spinner", Vec3(1, 2, 3), 1.0, Vec3(0, 0, 0), axisAngle(0.3, Vec3(2, -1, 2)),
+    s.bodies.push_back(boxDef("spinner", Vec3(1, 2, 3), 1.0, Vec3(0, 0, 0), axisAngle(0.3, Vec3(2, -1, 2)),
                            Vec3::Zero(), omega0));
     rbw::World world(s);
     const Vec3 L0 = world.states()[0].L_W;
@@ -380,7 +369,7 @@ void TestInvariants::forceWindowGivesImpulse()
     rbw::SceneDef s;
     s.name = "impulse";
     s.dt = dt;
-    s.bodies.push_back(box("box", Vec3(1, 2, 3), mass, x0, axisAngle(0.5, Vec3(1, 1, 0)), Vec3(0.5, -1, 0.25),
+    s.bodies.push_back(boxDef("box", Vec3(1, 2, 3), mass, x0, axisAngle(0.5, Vec3(1, 1, 0)), Vec3(0.5, -1, 0.25),
                            Vec3(0.5, 1, -0.5)));
     rbw::ForceDef f;
     f.body = 0;

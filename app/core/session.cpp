@@ -1,0 +1,260 @@
+#include "app/core/session.h"
+
+#include "physics/integrator_registry.h"
+
+#include <QElapsedTimer>
+
+#include <cmath>
+
+namespace rbw {
+
+Session::Session(QObject* parent) : QObject(parent) {}
+
+Session::~Session() = default;
+
+void Session::load(const SceneDef& scene)
+{
+    base_ = scene;
+    edited_ = scene;
+    grab_.reset();
+    reset();
+}
+
+void Session::reset()
+{
+    grab_.reset();
+    pendingPushes_.clear();
+    history_.clear();
+    world_ = std::make_unique<World>(edited_);
+    history_.push(HistoryEntry{world_->snapshot(), StepTrace{}, false});
+    emit sessionReset();
+    emit stateChanged();
+}
+
+const StepTrace* Session::currentTrace() const
+{
+    if (history_.empty() || !history_.back().hasTrace) {
+        return nullptr;
+    }
+    return &history_.back().trace;
+}
+
+const StepStatus& Session::status() const
+{
+    static const StepStatus none;
+    return world_ ? world_->status() : none;
+}
+
+bool Session::rebuild(SceneDef edited, QString* error)
+{
+    const std::vector<SceneIssue> issues = validate(edited);
+    if (!issues.empty()) {
+        if (error != nullptr) {
+            *error = QString::fromStdString(issues.front().path + ": " + issues.front().reason);
+        }
+        return false;
+    }
+    edited_ = std::move(edited);
+    if (world_) {
+        // Carry the current state over into a world built from the edited scene.
+        const WorldSnapshot now = world_->snapshot();
+        world_ = std::make_unique<World>(edited_);
+        world_->restore(now);
+    } else {
+        world_ = std::make_unique<World>(edited_);
+    }
+    emit stateChanged();
+    return true;
+}
+
+bool Session::setDt(double dt, QString* error)
+{
+    SceneDef s = edited_;
+    s.dt = dt;
+    return rebuild(std::move(s), error);
+}
+
+bool Session::setIntegrator(const QString& name, QString* error)
+{
+    SceneDef s = edited_;
+    s.integrator = name.toStdString();
+    return rebuild(std::move(s), error);
+}
+
+Vec3 Session::gravityWhenOn() const
+{
+    return base_.hasGravity() ? base_.g_W : Vec3(0.0, -9.81, 0.0);
+}
+
+void Session::setGravityEnabled(bool on)
+{
+    SceneDef s = edited_;
+    s.g_W = on ? gravityWhenOn() : Vec3::Zero();
+    rebuild(std::move(s), nullptr);
+}
+
+bool Session::gravityEnabled() const { return edited_.hasGravity(); }
+
+bool Session::setRestitution(double c, QString* error)
+{
+    SceneDef s = edited_;
+    s.restitution = c;
+    return rebuild(std::move(s), error);
+}
+
+bool Session::setFriction(double mu, QString* error)
+{
+    SceneDef s = edited_;
+    s.friction = mu;
+    return rebuild(std::move(s), error);
+}
+
+void Session::applyInteraction()
+{
+    if (grab_) {
+        const int b = grab_->body;
+        const Vec3 f_W = grab_->force(world_->massProperties()[b], world_->states()[b], edited_.dt);
+        world_->applyForceOnce(b, world_->bodyToWorld(b, grab_->p_B), f_W);
+    }
+    for (const auto& [p_W, f_W] : pendingPushes_) {
+        world_->applyForceOnce(edited_.push.body, p_W, f_W);
+    }
+    pendingPushes_.clear();
+}
+
+bool Session::step()
+{
+    const bool ok = stepQuiet();
+    if (ok) {
+        emit stateChanged();
+    }
+    return ok;
+}
+
+bool Session::stepQuiet()
+{
+    if (!world_ || !world_->status().ok) {
+        return false;
+    }
+    applyInteraction();
+    const StepStatus s = world_->step(&scratch_);
+    if (!s.ok) {
+        // The blown-up step's numbers are not results: keep the last good state in the
+        // history, so Step back still works, and say what happened.
+        emit blownUp(QString::fromStdString(s.message));
+        emit stateChanged();
+        return false;
+    }
+    history_.push(HistoryEntry{world_->snapshot(), scratch_, true});
+    emit stepRecorded(history_.back().trace);
+    return true;
+}
+
+int Session::advance(int maxSteps, double budgetMs)
+{
+    QElapsedTimer clock;
+    clock.start();
+    int taken = 0;
+    while (taken < maxSteps) {
+        if (!stepQuiet()) {
+            break;
+        }
+        ++taken;
+        if (static_cast<double>(clock.nsecsElapsed()) * 1e-6 >= budgetMs) {
+            break;
+        }
+    }
+    if (taken > 0) {
+        emit stateChanged();
+    }
+    return taken;
+}
+
+bool Session::stepBack()
+{
+    if (!world_ || !history_.pop()) {
+        return false;
+    }
+    // The world at the earlier state, exactly: its snapshot holds every body's state,
+    // the step counter, the time and the switches.
+    world_->restore(history_.back().state);
+    pendingPushes_.clear();
+    emit rewound(world_->stepIndex());
+    emit stateChanged();
+    return true;
+}
+
+void Session::beginGrab(int body, const Vec3& p_W)
+{
+    if (!world_ || body < 0 || body >= static_cast<int>(edited_.bodies.size()) || edited_.bodies[body].fixed) {
+        return;
+    }
+    MouseSpring spring;
+    spring.body = body;
+    spring.p_B = world_->worldToBody(body, p_W);
+    spring.target_W = p_W;
+    grab_ = spring;
+    emit stateChanged();
+}
+
+void Session::moveGrab(const Vec3& target_W)
+{
+    if (grab_) {
+        grab_->target_W = target_W;
+        emit stateChanged();
+    }
+}
+
+void Session::endGrab()
+{
+    if (grab_) {
+        grab_.reset();
+        emit stateChanged();
+    }
+}
+
+std::optional<std::pair<Vec3, Vec3>> Session::springSegment() const
+{
+    if (!grab_ || !world_) {
+        return std::nullopt;
+    }
+    return std::make_pair(world_->bodyToWorld(grab_->body, grab_->p_B), grab_->target_W);
+}
+
+bool Session::push(const Vec3& direction_W)
+{
+    if (!world_ || edited_.push.body < 0 || direction_W.norm() == 0.0) {
+        return false;
+    }
+    const Vec3 p_W = world_->bodyToWorld(edited_.push.body, edited_.push.p_B);
+    pendingPushes_.emplace_back(p_W, edited_.push.magnitude * direction_W.normalized());
+    return true;
+}
+
+bool Session::toggleTorques()
+{
+    if (!world_ || !world_->hasSwitchableTorque()) {
+        return false;
+    }
+    const bool on = !torquesOn();
+    for (int i = 0; i < static_cast<int>(edited_.torques.size()); ++i) {
+        world_->setTorqueEnabled(i, on);
+    }
+    emit stateChanged();
+    return true;
+}
+
+bool Session::torquesOn() const
+{
+    if (!world_) {
+        return false;
+    }
+    for (int i = 0; i < static_cast<int>(edited_.torques.size()); ++i) {
+        if (edited_.torques[i].switchable && world_->torqueEnabled(i)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace rbw

@@ -1,0 +1,110 @@
+// A session: one lesson's world as the student drives it. It owns the world, the
+// history behind Step back, the student's changes to the scene's parameters (dt,
+// integrator, gravity, restitution, friction) and the interaction (mouse spring,
+// keyboard pushes, the K toggle). The views only read it: the 3D view a snapshot,
+// the panels and derivation the current trace, the plots one diagnostics sample
+// per step. Qt Core only, so it is tested without a window.
+#pragma once
+
+#include "app/core/step_history.h"
+#include "physics/interaction/mouse_spring.h"
+#include "physics/scene.h"
+#include "physics/trace.h"
+#include "physics/world.h"
+
+#include <QObject>
+#include <QString>
+
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace rbw {
+
+class Session : public QObject {
+    Q_OBJECT
+public:
+    explicit Session(QObject* parent = nullptr);
+    ~Session() override;
+
+    // Starts over from this scene (validated by the caller). Emits sessionReset().
+    void load(const SceneDef& scene);
+    // Back to the loaded scene's initial state, keeping the student's parameters.
+    void reset();
+    bool isLoaded() const { return world_ != nullptr; }
+
+    const World* world() const { return world_.get(); }
+    const SceneDef& baseScene() const { return base_; }
+    // The trace of the step that produced the current state; nullptr at step 0.
+    const StepTrace* currentTrace() const;
+    const StepHistory& history() const { return history_; }
+
+    // --- parameters: each rebuilds the world from the edited scene and carries the
+    // current state over, so the run continues from where it is ---
+    bool setDt(double dt, QString* error = nullptr);
+    bool setIntegrator(const QString& name, QString* error = nullptr);
+    void setGravityEnabled(bool on);
+    bool gravityEnabled() const;
+    // The gravity the switch turns on: the scene's, or (0, -9.81, 0) when it has none.
+    Vec3 gravityWhenOn() const;
+    bool setRestitution(double c, QString* error = nullptr);
+    bool setFriction(double mu, QString* error = nullptr);
+
+    // --- stepping ---
+    // One step (with the pending interaction forces). False after a blow-up.
+    // Emits stepRecorded and stateChanged.
+    bool step();
+    // Playing: up to maxSteps steps, but stops after budgetMs of wall time so the GUI
+    // stays responsive; returns the number of steps taken.
+    int advance(int maxSteps, double budgetMs);
+    // Restores the previous state and its trace exactly. False if there is none.
+    bool stepBack();
+    const StepStatus& status() const;
+
+    // --- interaction ---
+    // The mouse spring: grab a body at a world point, move the target, release.
+    void beginGrab(int body, const Vec3& p_W);
+    void moveGrab(const Vec3& target_W);
+    void endGrab();
+    bool isGrabbing() const { return grab_.has_value(); }
+    // From the picked point (now) to the target, for drawing.
+    std::optional<std::pair<Vec3, Vec3>> springSegment() const;
+    // The scene's keyboard push (SceneDef::push) along a world direction; it acts in
+    // the next step. False if the scene has no push.
+    bool push(const Vec3& direction_W);
+    // Turns every switchable torque off if any is on, else on (the K key). False if
+    // the scene has none.
+    bool toggleTorques();
+    bool torquesOn() const;
+
+signals:
+    // A new lesson, or reset: views drop what they hold.
+    void sessionReset();
+    // One step was taken; its trace holds the diagnostics after it. Emitted for every
+    // step, also inside advance(), so plots get one sample per step.
+    void stepRecorded(const rbw::StepTrace& trace);
+    // The history was rewound to the current state (Step back): keep samples up to
+    // and including step index `stepIndex`.
+    void rewound(long stepIndex);
+    // The state or the parameters changed (after a step, a batch, step back, a switch).
+    void stateChanged();
+    // The run stopped: a non-finite value or an energy jump; the message says where.
+    void blownUp(const QString& message);
+
+private:
+    bool rebuild(SceneDef edited, QString* error);
+    // One step without stateChanged (advance() emits it once per batch).
+    bool stepQuiet();
+    void applyInteraction();
+
+    SceneDef base_;     // as loaded from the lesson
+    SceneDef edited_;   // with the student's parameters
+    std::unique_ptr<World> world_;
+    StepHistory history_;
+    StepTrace scratch_;
+    std::optional<MouseSpring> grab_;
+    std::vector<std::pair<Vec3, Vec3>> pendingPushes_;   // (p_W, f_W)
+};
+
+} // namespace rbw
