@@ -13,8 +13,10 @@ namespace rbw {
 struct IntegratorInfo {
     const char* name;
     const char* summary;   // one line: method, order, source
+    int order = 1;         // global order of accuracy: error ~ h^order (measured in tests/integrators)
 };
 
+// In the order `rbw integrators` lists them: explicit-euler first.
 const std::vector<IntegratorInfo>& integratorCatalogue();
 
 // nullptr if the name is unknown.
