@@ -1,0 +1,76 @@
+// Turns a snapshot (plus the motion trails the view keeps) into the vertex arrays of
+// one frame: lit triangles (boxes, arrows, balls), lines (edges, body axes, trails,
+// the spring) and plane patches. Plain CPU code, so it can be tested without GL.
+//
+// Arrow lengths: each kind has its own display scale, chosen so that the longest
+// arrow of that kind is drawn one reference length long, where the reference length
+// is the mean of the bodies' longest edges (arrowScale in view_style.h). The legend
+// prints the magnitude that this length stands for.
+#pragma once
+
+#include "app/gui/view/mesh_primitives.h"
+#include "app/gui/view/view_snapshot.h"
+
+#include <limits>
+#include <vector>
+
+namespace rbw::view {
+
+struct Bounds {
+    Vec3 min_W = Vec3::Constant(std::numeric_limits<double>::infinity());
+    Vec3 max_W = Vec3::Constant(-std::numeric_limits<double>::infinity());
+
+    bool valid() const { return (min_W.array() <= max_W.array()).all(); }
+    void add(const Vec3& p_W)
+    {
+        if (!isFinite(p_W)) return;
+        min_W = min_W.cwiseMin(p_W);
+        max_W = max_W.cwiseMax(p_W);
+    }
+    void add(const Bounds& b)
+    {
+        if (b.valid()) {
+            add(b.min_W);
+            add(b.max_W);
+        }
+    }
+};
+
+// The world AABB of all finite bodies' corners (planes are infinite and ignored).
+Bounds bodyBounds(const ViewSnapshot& snap);
+
+// The mean of the finite bodies' longest edges; 1 m when there are none.
+double referenceLength(const ViewSnapshot& snap);
+
+struct FrameOptions {
+    Vec3 eye_W = Vec3(0, 0, 10);   // decides which side of a plane faces the camera
+    Bounds sceneBox;               // where plane patches end
+    bool trails = true;
+    int highlightBody = -1;        // the grabbed body, drawn lighter
+};
+
+// What each kind of arrow's full reference length stands for (0: none drawn).
+struct ArrowScales {
+    double refLength = 1.0;       // m on screen
+    double maxForce = 0.0;        // N   (applied forces and gravity share one scale)
+    double maxVelocity = 0.0;     // m/s (probe velocities)
+    double maxImpulse = 0.0;      // N s (J n)
+    bool hasGravity = false;
+    bool hasApplied = false;
+    bool hasProbes = false;
+    bool hasContacts = false;
+    bool hasSpring = false;
+};
+
+struct FrameGeometry {
+    std::vector<LitVertex> lit;       // the boxes
+    std::vector<LitVertex> overlay;   // arrows and markers: also shown, faintly, through boxes
+    std::vector<LineVertex> lines;
+    std::vector<PlaneVertex> planes;   // triangles, farthest plane first
+    ArrowScales scales;
+};
+
+FrameGeometry buildFrameGeometry(const ViewSnapshot& snap, const std::vector<std::vector<Vec3>>& trails,
+                                 const FrameOptions& options);
+
+} // namespace rbw::view
