@@ -1,0 +1,45 @@
+// The step-by-step derivation of one step as an HTML document: a lesson's template
+// (derivation.md, see docs/derivation-templates.md and derivation_template.h) filled
+// in from the step's trace, or the generic fallback when a lesson has none.
+//
+// Every number comes from the trace (through value_format's latexValue); the scene
+// definition gives only names and the inputs h, M, size and g. A placeholder whose
+// entry is not in this step's trace shows a red "not computed in this step" note, never
+// a number; template syntax errors are listed as "file:line: message" at the top of
+// the page, above the fallback.
+#pragma once
+
+#include "app/gui/derivation/derivation_page.h"
+#include "physics/scene.h"
+#include "physics/trace.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace rbw {
+
+struct DerivationOptions {
+    QString katexUrl = defaultKatexUrl();   // where katex.min.js/.css are, with a trailing slash
+    int digits = 7;                         // significant digits of every number
+};
+
+struct DerivationDocument {
+    QString html;          // a complete document, starting with <!DOCTYPE html>
+    QStringList errors;    // template errors, "file:line: message"
+    QStringList notes;     // placeholders without a value here, "file:line: {{id}}: reason"
+    bool fallback = false; // the generic derivation was used (no template, or a broken one)
+};
+
+// Fills a template (its text, and the label used in messages) from the trace.
+DerivationDocument buildDerivation(const StepTrace& trace, const SceneDef& scene, const QString& templateText,
+                                   const QString& templateLabel, const DerivationOptions& options = {});
+
+// Every traced quantity, grouped by stage and body/contact, as formula = value.
+DerivationDocument buildFallbackDerivation(const StepTrace& trace, const SceneDef& scene,
+                                           const DerivationOptions& options = {});
+
+// lessonDirectory/derivation.md if it exists, else the fallback.
+DerivationDocument buildLessonDerivation(const StepTrace& trace, const SceneDef& scene,
+                                         const QString& lessonDirectory, const DerivationOptions& options = {});
+
+} // namespace rbw
