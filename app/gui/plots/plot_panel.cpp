@@ -1,0 +1,494 @@
+#include "app/gui/plots/plot_panel.h"
+
+#include "app/gui/plots/plot_axis_range.h"
+#include "app/gui/plots/plot_decimation.h"
+
+#include <QAction>
+#include <QChart>
+#include <QChartView>
+#include <QCoreApplication>
+#include <QGraphicsLayout>
+#include <QCheckBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QImage>
+#include <QLegend>
+#include <QLegendMarker>
+#include <QLineSeries>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPainter>
+#include <QPixmap>
+#include <QSaveFile>
+#include <QTabWidget>
+#include <QTimer>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rbw {
+
+namespace {
+
+// At most ~30 repaints per second, however fast the steps come.
+constexpr int kRefreshIntervalMs = 33;
+constexpr qreal kExportPixelRatio = 2.0;
+constexpr int kAxisTickCount = 5;
+
+// Colours: energy parts in distinct hues, components x, y, z in the usual red,
+// green, blue of the axes, and every total or length in black.
+QColor seriesColour(PlotQuantity q)
+{
+    switch (q) {
+    case PlotQuantity::KineticTranslational: return QColor(0x1f, 0x77, 0xb4);
+    case PlotQuantity::KineticRotational: return QColor(0xff, 0x7f, 0x0e);
+    case PlotQuantity::Potential: return QColor(0x2c, 0xa0, 0x2c);
+    case PlotQuantity::P_x:
+    case PlotQuantity::L_O_x: return QColor(0xd6, 0x27, 0x28);
+    case PlotQuantity::P_y:
+    case PlotQuantity::L_O_y: return QColor(0x2c, 0xa0, 0x2c);
+    case PlotQuantity::P_z:
+    case PlotQuantity::L_O_z: return QColor(0x1f, 0x77, 0xb4);
+    case PlotQuantity::Total:
+    case PlotQuantity::P_norm:
+    case PlotQuantity::L_O_norm: return QColor(Qt::black);
+    }
+    return QColor(Qt::gray);
+}
+
+QIcon swatch(const QColor& colour)
+{
+    QPixmap pixmap(12, 12);
+    pixmap.fill(colour);
+    return QIcon(pixmap);
+}
+
+// A printf format for the tick labels of [min, max] with ticks `step` apart: fixed
+// decimals for everyday magnitudes, exponent form for very large or small ones, and
+// always enough digits that neighbouring ticks read differently.
+QString labelFormat(double min, double max, double step)
+{
+    const double magnitude = std::max(std::abs(min), std::abs(max));
+    if (!(step > 0.0) || !(magnitude > 0.0)) return QStringLiteral("%.1f");
+    if (magnitude >= 1e5 || magnitude < 1e-3) {
+        const int digits = std::clamp(static_cast<int>(std::ceil(std::log10(magnitude / step))), 1, 12);
+        return QStringLiteral("%.%1e").arg(digits);
+    }
+    const int decimals = std::clamp(static_cast<int>(-std::floor(std::log10(step) + 1e-9)), 0, 12);
+    return QStringLiteral("%.%1f").arg(decimals);
+}
+
+void setErrorText(QString* error, const QString& text)
+{
+    if (error != nullptr) *error = text;
+}
+
+} // namespace
+
+PlotPanel::PlotPanel(QWidget* parent)
+    : QWidget(parent)
+{
+    // The throttle first: building the pages already schedules a refresh.
+    refreshTimer_ = new QTimer(this);
+    refreshTimer_->setSingleShot(true);
+    refreshTimer_->setInterval(kRefreshIntervalMs);
+    connect(refreshTimer_, &QTimer::timeout, this, &PlotPanel::refreshNow);
+
+    tabs_ = new QTabWidget(this);
+    tabs_->setDocumentMode(true);
+    for (int c = 0; c < kPlotChartCount; ++c) {
+        const PlotChart chart = static_cast<PlotChart>(c);
+        tabs_->addTab(buildChartPage(chart), QString::fromUtf8(plotChartInfo(chart).tabTitle));
+    }
+
+    exportPngAction_ = new QAction(tr("Export PNG…"), this);
+    exportPngAction_->setToolTip(tr("Save the chart of this tab as a PNG image"));
+    exportCsvAction_ = new QAction(tr("Export CSV…"), this);
+    exportCsvAction_->setToolTip(tr("Save every sample of every series as CSV"));
+    connect(exportPngAction_, &QAction::triggered, this, &PlotPanel::exportPngInteractive);
+    connect(exportCsvAction_, &QAction::triggered, this, &PlotPanel::exportCsvInteractive);
+
+    auto* exportButton = new QToolButton(tabs_);
+    exportButton->setText(tr("Export"));
+    exportButton->setPopupMode(QToolButton::InstantPopup);
+    exportButton->setAutoRaise(true);
+    auto* exportMenu = new QMenu(exportButton);
+    exportMenu->addAction(exportPngAction_);
+    exportMenu->addAction(exportCsvAction_);
+    exportButton->setMenu(exportMenu);
+    tabs_->setCornerWidget(exportButton, Qt::TopRightCorner);
+
+    for (const ChartParts& parts : charts_) {
+        parts.view->addAction(exportPngAction_);
+        parts.view->addAction(exportCsvAction_);
+        parts.view->setContextMenuPolicy(Qt::ActionsContextMenu);
+    }
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(tabs_);
+
+    refreshNow();
+}
+
+PlotPanel::~PlotPanel() = default;
+
+QWidget* PlotPanel::buildChartPage(PlotChart which)
+{
+    ChartParts& parts = charts_[static_cast<std::size_t>(plotIndex(which))];
+
+    QFont smallFont = font();
+    smallFont.setPointSizeF(std::max(7.0, smallFont.pointSizeF() - 1.0));
+
+    parts.chart = new QChart();
+    parts.chart->setAnimationOptions(QChart::NoAnimation);
+    parts.chart->setBackgroundRoundness(0);
+    parts.chart->setMargins(QMargins(2, 2, 6, 2));
+    parts.chart->legend()->setAlignment(Qt::AlignTop);
+    parts.chart->legend()->setFont(smallFont);
+
+    parts.xAxis = new QValueAxis(parts.chart);
+    parts.xAxis->setTitleText(QStringLiteral("t [s]"));
+    parts.yAxis = new QValueAxis(parts.chart);
+    parts.yAxis->setTitleText(QString::fromUtf8(plotChartInfo(which).axisTitle));
+    for (QValueAxis* axis : {parts.xAxis, parts.yAxis}) {
+        axis->setLabelsFont(smallFont);
+        axis->setTitleFont(smallFont);
+        axis->setTickCount(kAxisTickCount);
+    }
+    parts.chart->addAxis(parts.xAxis, Qt::AlignBottom);
+    parts.chart->addAxis(parts.yAxis, Qt::AlignLeft);
+
+    auto* page = new QWidget(tabs_);
+    auto* boxes = new QHBoxLayout();
+    boxes->setContentsMargins(4, 2, 4, 0);
+    boxes->setSpacing(8);
+
+    for (const PlotSeriesInfo& info : plotSeriesCatalogue()) {
+        if (info.chart != which) continue;
+        SeriesParts& s = series_[static_cast<std::size_t>(plotIndex(info.quantity))];
+        const QString label = QString::fromUtf8(info.label);
+        const QColor colour = seriesColour(info.quantity);
+
+        s.line = new QLineSeries(parts.chart);
+        s.line->setName(label);
+        QPen pen(colour);
+        pen.setWidthF(info.quantity == PlotQuantity::Total || info.quantity == PlotQuantity::P_norm
+                              || info.quantity == PlotQuantity::L_O_norm
+                          ? 2.5
+                          : 1.8);
+        s.line->setPen(pen);
+        parts.chart->addSeries(s.line);
+        s.line->attachAxis(parts.xAxis);
+        s.line->attachAxis(parts.yAxis);
+
+        s.box = new QCheckBox(label, page);
+        s.box->setIcon(swatch(colour));
+        s.box->setToolTip(QString::fromUtf8(info.meaning));
+        s.box->setChecked(info.visibleByDefault);
+        const PlotQuantity q = info.quantity;
+        connect(s.box, &QCheckBox::toggled, this, [this, q](bool on) { applySeriesVisibility(q, on); });
+        boxes->addWidget(s.box);
+        applySeriesVisibility(q, info.visibleByDefault);
+    }
+    boxes->addStretch(1);
+
+    parts.view = new QChartView(parts.chart, page);
+    parts.view->setRenderHint(QPainter::Antialiasing);
+    parts.view->setMinimumSize(200, 120);
+
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addLayout(boxes);
+    layout->addWidget(parts.view, 1);
+    return page;
+}
+
+bool PlotPanel::appendStep(double t, const Diagnostics& d)
+{
+    QString error;
+    if (!data_.append(t, d, &error)) {
+        lastError_ = error;
+        return false;
+    }
+    axesDirty_ = true;
+    scheduleRefresh();
+    return true;
+}
+
+void PlotPanel::truncate(int sampleCount)
+{
+    const int keep = std::clamp(sampleCount, 0, data_.sampleCount());
+    if (keep == data_.sampleCount()) return;
+    data_.truncate(keep);
+    if (stride_ == 1 && keep <= displayedSamples_) {
+        // Drop the later points from the chart series themselves: no rebuild needed.
+        for (SeriesParts& s : series_) s.line->removePoints(keep, displayedSamples_ - keep);
+        displayedSamples_ = keep;
+    } else {
+        rebuildDisplay_ = true;
+    }
+    // After a step back the axes fit the remaining data again (no hysteresis).
+    for (ChartParts& parts : charts_) parts.hasInput = false;
+    axesDirty_ = true;
+    scheduleRefresh();
+}
+
+void PlotPanel::clear()
+{
+    data_.clear();
+    for (SeriesParts& s : series_) s.line->clear();
+    displayedSamples_ = 0;
+    stride_ = 1;
+    rebuildDisplay_ = false;
+    for (ChartParts& parts : charts_) parts.hasInput = false;
+    axesDirty_ = true;
+    scheduleRefresh();
+}
+
+int PlotPanel::sampleCount() const
+{
+    return data_.sampleCount();
+}
+
+QList<QPointF> PlotPanel::points(const QString& seriesId) const
+{
+    const PlotSeriesInfo* info = findPlotSeries(seriesId);
+    if (info == nullptr) return {};
+    return data_.points(info->quantity);
+}
+
+QStringList PlotPanel::seriesIds()
+{
+    QStringList ids;
+    for (const PlotSeriesInfo& s : plotSeriesCatalogue()) ids << QString::fromLatin1(s.id);
+    return ids;
+}
+
+bool PlotPanel::isSeriesVisible(const QString& id) const
+{
+    const PlotSeriesInfo* info = findPlotSeries(id);
+    if (info == nullptr) return false;
+    return series_[static_cast<std::size_t>(plotIndex(info->quantity))].line->isVisible();
+}
+
+bool PlotPanel::setSeriesVisible(const QString& id, bool visible)
+{
+    const PlotSeriesInfo* info = findPlotSeries(id);
+    if (info == nullptr) {
+        lastError_ = QStringLiteral("unknown plot series \"%1\"").arg(id);
+        return false;
+    }
+    // The check box's toggled signal applies it (and nothing happens if it is unchanged).
+    series_[static_cast<std::size_t>(plotIndex(info->quantity))].box->setChecked(visible);
+    return true;
+}
+
+void PlotPanel::applySeriesVisibility(PlotQuantity q, bool visible)
+{
+    const SeriesParts& s = series_[static_cast<std::size_t>(plotIndex(q))];
+    const ChartParts& parts = charts_[static_cast<std::size_t>(plotIndex(plotSeriesInfo(q).chart))];
+    s.line->setVisible(visible);
+    // A hidden series leaves the legend too.
+    for (QLegendMarker* marker : parts.chart->legend()->markers(s.line)) marker->setVisible(visible);
+    axesDirty_ = true;
+    scheduleRefresh();
+    emit seriesVisibilityChanged(QString::fromLatin1(plotSeriesInfo(q).id), visible);
+}
+
+PlotChart PlotPanel::currentChart() const
+{
+    return static_cast<PlotChart>(tabs_->currentIndex());
+}
+
+void PlotPanel::setCurrentChart(PlotChart chart)
+{
+    tabs_->setCurrentIndex(plotIndex(chart));
+}
+
+ValueRange PlotPanel::xAxisRange(PlotChart chart) const
+{
+    const ChartParts& parts = charts_[static_cast<std::size_t>(plotIndex(chart))];
+    return ValueRange{parts.xAxis->min(), parts.xAxis->max()};
+}
+
+ValueRange PlotPanel::yAxisRange(PlotChart chart) const
+{
+    const ChartParts& parts = charts_[static_cast<std::size_t>(plotIndex(chart))];
+    return ValueRange{parts.yAxis->min(), parts.yAxis->max()};
+}
+
+int PlotPanel::displayedPointCount(const QString& id) const
+{
+    const PlotSeriesInfo* info = findPlotSeries(id);
+    if (info == nullptr) return 0;
+    return static_cast<int>(series_[static_cast<std::size_t>(plotIndex(info->quantity))].line->count());
+}
+
+void PlotPanel::setMaxDisplayPoints(int maxPoints)
+{
+    maxDisplayPoints_ = std::max(2, maxPoints);
+    rebuildDisplay_ = true;
+    scheduleRefresh();
+}
+
+void PlotPanel::scheduleRefresh()
+{
+    if (!refreshTimer_->isActive()) refreshTimer_->start();
+}
+
+void PlotPanel::refreshNow()
+{
+    refreshTimer_->stop();
+    updateDisplayedPoints();
+    if (axesDirty_) {
+        for (int c = 0; c < kPlotChartCount; ++c) updateAxes(static_cast<PlotChart>(c));
+        axesDirty_ = false;
+    }
+}
+
+void PlotPanel::updateDisplayedPoints()
+{
+    const int n = data_.sampleCount();
+    const int stride = strideFor(n, maxDisplayPoints_);
+    const int shown = displayedSampleCount(n, stride);
+    if (rebuildDisplay_ || stride != stride_ || shown < displayedSamples_) {
+        // The stride changed (or a step back cut into a bucket): redraw from the data.
+        for (const PlotSeriesInfo& info : plotSeriesCatalogue()) {
+            QList<QPointF> pts;
+            pts.reserve(displayPointCount(n, stride));
+            appendDisplayPoints(data_, info.quantity, 0, shown, stride, pts);
+            series_[static_cast<std::size_t>(plotIndex(info.quantity))].line->replace(pts);
+        }
+        stride_ = stride;
+        displayedSamples_ = shown;
+        rebuildDisplay_ = false;
+        return;
+    }
+    if (shown == displayedSamples_) return;
+    // Only the new samples are appended: one signal per series, no rebuild.
+    for (const PlotSeriesInfo& info : plotSeriesCatalogue()) {
+        QList<QPointF> pts;
+        appendDisplayPoints(data_, info.quantity, displayedSamples_, shown, stride_, pts);
+        series_[static_cast<std::size_t>(plotIndex(info.quantity))].line->append(pts);
+    }
+    displayedSamples_ = shown;
+}
+
+void PlotPanel::updateAxes(PlotChart chart)
+{
+    ChartParts& parts = charts_[static_cast<std::size_t>(plotIndex(chart))];
+
+    // The wanted ranges: all samples in time, the visible series' values.
+    const ValueRange xWanted = timeAxisRange(data_.lastTime());
+    bool any = false;
+    ValueRange data{0.0, 0.0};
+    for (const PlotSeriesInfo& info : plotSeriesCatalogue()) {
+        if (info.chart != chart) continue;
+        if (!series_[static_cast<std::size_t>(plotIndex(info.quantity))].line->isVisible()) continue;
+        const std::optional<ValueRange> r = data_.valueRange(info.quantity);
+        if (!r) continue;
+        data.min = any ? std::min(data.min, r->min) : r->min;
+        data.max = any ? std::max(data.max, r->max) : r->max;
+        any = true;
+    }
+    const ValueRange yWanted = any ? valueAxisRange(data.min, data.max) : ValueRange{0.0, 1.0};
+
+    // Keep the current (nice) range while it still holds the wanted one and the
+    // wanted one has not shrunk to less than half of what the axis was made for;
+    // otherwise re-fit. This spares a relayout on most refreshes.
+    auto apply = [](QValueAxis* axis, ValueRange& input, const ValueRange& wanted, bool force) {
+        const bool inside = wanted.min >= axis->min() && wanted.max <= axis->max();
+        const bool shrunk = (wanted.max - wanted.min) < 0.5 * (input.max - input.min);
+        if (!force && inside && !shrunk) return;
+        input = wanted;
+        axis->setTickCount(kAxisTickCount);
+        axis->setRange(wanted.min, wanted.max);
+        axis->applyNiceNumbers();
+        const double step = (axis->max() - axis->min()) / std::max(1, axis->tickCount() - 1);
+        axis->setLabelFormat(labelFormat(axis->min(), axis->max(), step));
+    };
+    apply(parts.xAxis, parts.xInput, xWanted, !parts.hasInput);
+    apply(parts.yAxis, parts.yInput, yWanted, !parts.hasInput);
+    parts.hasInput = true;
+}
+
+QSize PlotPanel::exportLogicalSize() const
+{
+    const ChartParts& parts = charts_[static_cast<std::size_t>(plotIndex(currentChart()))];
+    return parts.chart->size().toSize();
+}
+
+bool PlotPanel::exportPng(const QString& path, QString* error)
+{
+    refreshNow();
+    ChartParts& parts = charts_[static_cast<std::size_t>(plotIndex(currentChart()))];
+    if (!parts.view->isVisible()) {
+        // Never laid out on screen (a closed dock): give the chart a sensible size.
+        parts.chart->resize(QSizeF(800, 500));
+    }
+    // Axis ticks and labels are laid out on a posted LayoutRequest: do it now, so
+    // the image shows the axes as they are, not as they were one event ago.
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    parts.chart->layout()->activate();
+    const QSize logical = exportLogicalSize();
+    if (logical.width() < 10 || logical.height() < 10) {
+        setErrorText(error, QStringLiteral("cannot export %1: the chart has no size yet").arg(path));
+        return false;
+    }
+
+    // Render the chart's scene at twice the resolution, on white.
+    QImage image(logical * kExportPixelRatio, QImage::Format_ARGB32_Premultiplied);
+    image.setDevicePixelRatio(kExportPixelRatio);
+    image.fill(Qt::white);
+    {
+        QPainter painter(&image);
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.setRenderHint(QPainter::TextAntialiasing);
+        const QRectF source = parts.chart->mapRectToScene(QRectF(QPointF(0, 0), parts.chart->size()));
+        parts.chart->scene()->render(&painter, QRectF(QPointF(0, 0), QSizeF(logical)), source);
+    }
+
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        setErrorText(error, QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
+        return false;
+    }
+    if (!image.save(&file, "PNG") || !file.commit()) {
+        setErrorText(error, QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
+        return false;
+    }
+    return true;
+}
+
+bool PlotPanel::exportCsv(const QString& path, QString* error)
+{
+    return data_.writeCsv(path, error);
+}
+
+void PlotPanel::exportPngInteractive()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export plot as PNG"),
+                                                      QDir::home().filePath(QStringLiteral("plot.png")),
+                                                      tr("PNG images (*.png)"));
+    if (path.isEmpty()) return;
+    QString error;
+    if (!exportPng(path, &error)) QMessageBox::warning(this, tr("Export PNG"), error);
+}
+
+void PlotPanel::exportCsvInteractive()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export plot data as CSV"),
+                                                      QDir::home().filePath(QStringLiteral("plot.csv")),
+                                                      tr("CSV files (*.csv)"));
+    if (path.isEmpty()) return;
+    QString error;
+    if (!exportCsv(path, &error)) QMessageBox::warning(this, tr("Export CSV"), error);
+}
+
+} // namespace rbw

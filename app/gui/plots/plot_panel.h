@@ -1,0 +1,128 @@
+// The energy and momentum plots: three Qt Charts (energy; linear momentum P;
+// angular momentum about the origin L_O), one tab each, with a row of check boxes
+// per chart that shows or hides its series, and export to PNG and CSV.
+//
+// It only shows numbers recorded by the physics: appendStep() takes a step's
+// StepTrace::diagnostics (physics/diagnostics.h); see plot_catalogue.h for which
+// number each series is. Nothing physical is computed here.
+//
+// Live updates stay cheap at 60 steps/s for minutes: appendStep() only stores the
+// sample; a timer (at most ~30 Hz) appends the new points to the chart series and
+// rescales the axes; beyond maxDisplayPoints() samples a series is drawn decimated
+// (plot_decimation.h) while points() and the CSV keep every sample.
+#pragma once
+
+#include "app/gui/plots/plot_catalogue.h"
+#include "app/gui/plots/plot_series.h"
+
+#include <QList>
+#include <QPointF>
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+
+#include <array>
+
+class QAction;
+class QChart;
+class QChartView;
+class QCheckBox;
+class QLineSeries;
+class QTabWidget;
+class QTimer;
+class QValueAxis;
+
+namespace rbw {
+
+class PlotPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit PlotPanel(QWidget* parent = nullptr);
+    ~PlotPanel() override;
+
+    // One sample per step: t (StepTrace::time, the end of the step) and the step's
+    // diagnostics. A sample with a non-finite number, or a t before the last one,
+    // is refused: false, nothing stored, the reason in lastError().
+    bool appendStep(double t, const rbw::Diagnostics& d);
+    // Keeps the first sampleCount samples (after a step back); clamped to [0, count].
+    void truncate(int sampleCount);
+    void clear();
+
+    int sampleCount() const;
+    // Every sample of a series (the full data, never decimated); empty for an unknown id.
+    QList<QPointF> points(const QString& seriesId) const;
+    const PlotSeries& data() const { return data_; }
+    QString lastError() const { return lastError_; }
+
+    // The catalogue's ids, in CSV column order.
+    static QStringList seriesIds();
+    bool isSeriesVisible(const QString& id) const;   // false for an unknown id
+    // Shows or hides a series (and ticks its check box); false for an unknown id.
+    bool setSeriesVisible(const QString& id, bool visible);
+
+    PlotChart currentChart() const;
+    void setCurrentChart(PlotChart chart);
+
+    // The axis ranges a chart shows now (after refreshNow() they reflect every sample).
+    ValueRange xAxisRange(PlotChart chart) const;
+    ValueRange yAxisRange(PlotChart chart) const;
+    // How many points the chart draws for a series (fewer than sampleCount() when decimated).
+    int displayedPointCount(const QString& id) const;
+    int maxDisplayPoints() const { return maxDisplayPoints_; }
+    void setMaxDisplayPoints(int maxPoints);   // at least 2; default 20000
+
+    // Applies pending samples to the charts and rescales the axes now instead of at
+    // the next timer tick (tests, export).
+    void refreshNow();
+
+    // The chart of the current tab as a PNG at device pixel ratio 2 on white: the
+    // image is 2 * exportLogicalSize() pixels. False with a message on failure.
+    bool exportPng(const QString& path, QString* error);
+    QSize exportLogicalSize() const;
+    // All samples of all series (PlotSeries::csv()), written atomically.
+    bool exportCsv(const QString& path, QString* error);
+
+signals:
+    void seriesVisibilityChanged(const QString& id, bool visible);
+
+private:
+    struct ChartParts {
+        QChart* chart = nullptr;
+        QChartView* view = nullptr;
+        QValueAxis* xAxis = nullptr;
+        QValueAxis* yAxis = nullptr;
+        ValueRange xInput{0.0, 0.0};   // the unrounded ranges last applied
+        ValueRange yInput{0.0, 0.0};
+        bool hasInput = false;
+    };
+    struct SeriesParts {
+        QLineSeries* line = nullptr;
+        QCheckBox* box = nullptr;
+    };
+
+    QWidget* buildChartPage(PlotChart chart);
+    void scheduleRefresh();
+    void updateDisplayedPoints();
+    void updateAxes(PlotChart chart);
+    void applySeriesVisibility(PlotQuantity q, bool visible);
+    void exportPngInteractive();
+    void exportCsvInteractive();
+
+    PlotSeries data_;
+    QString lastError_;
+    QTabWidget* tabs_ = nullptr;
+    QTimer* refreshTimer_ = nullptr;
+    QAction* exportPngAction_ = nullptr;
+    QAction* exportCsvAction_ = nullptr;
+    std::array<ChartParts, kPlotChartCount> charts_{};
+    std::array<SeriesParts, kPlotQuantityCount> series_{};
+
+    // What the chart series show: the first displayedSamples_ samples, at stride_.
+    int displayedSamples_ = 0;
+    int stride_ = 1;
+    bool rebuildDisplay_ = false;
+    bool axesDirty_ = true;
+    int maxDisplayPoints_ = 20000;
+};
+
+} // namespace rbw
