@@ -1,12 +1,19 @@
-// rigid-workbook: the desktop app. Opens on lesson 1, or on the lesson named with
-// --lesson ID.
+// rigid-workbook: the desktop app. Opens on the lesson named with --lesson ID, else on
+// the lesson open when it was last closed, else (the first time) on lesson 1.
 #include "app/gui/main_window.h"
+#include "app/gui/view/scene_view.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QSettings>
+#include <QSurfaceFormat>
 
 int main(int argc, char* argv[])
 {
+    // QtWebEngine (the derivation) and the OpenGL view share contexts; both must be
+    // set before the QApplication exists.
+    QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    QSurfaceFormat::setDefaultFormat(rbw::SceneView::requestedFormat());
     QApplication app(argc, argv);
     QApplication::setApplicationName("Rigid Body Workbook");
     QApplication::setOrganizationName("rigid-workbook");
@@ -14,12 +21,14 @@ int main(int argc, char* argv[])
     QCommandLineParser parser;
     parser.setApplicationDescription("Rigid Body Workbook: 3D rigid-body dynamics, step by step.");
     parser.addHelpOption();
-    parser.addOption({"lesson", "Open this lesson (folder name, e.g. 01-one-step).", "ID", "01-one-step"});
+    parser.addOption({"lesson", "Open this lesson (folder name, e.g. 01-one-step).", "ID"});
     parser.process(app);
 
     rbw::MainWindow window;
     window.show();
-    if (!window.openLesson(parser.value("lesson"))) {
+    const QString wanted = parser.isSet("lesson") ? parser.value("lesson")
+                                                  : QSettings().value("lesson/last", "01-one-step").toString();
+    if (!window.openLesson(wanted)) {
         window.openLesson("01-one-step");
     }
     return app.exec();

@@ -1,16 +1,22 @@
-// The workbook's main window: the lesson list, the quantities table of the current
-// step (a TraceModel over the trace), the lesson text, and Step / Play / Reset.
+// The workbook's main window. The 3D view sits in the middle; docks around it hold
+// the lesson list and text, the quantities of the current step (a TraceModel over
+// the trace), the typeset derivation and the energy and momentum plots. A Session
+// owns the world, its history and the interaction; this window only wires the
+// controls to the session and the session's signals to the views.
 #pragma once
 
 #include "app/core/lesson_catalogue.h"
-#include "physics/trace.h"
-#include "physics/world.h"
+#include "app/core/session.h"
 
+#include <QElapsedTimer>
+#include <QList>
 #include <QMainWindow>
 
-#include <memory>
-
 class QAction;
+class QCheckBox;
+class QComboBox;
+class QDockWidget;
+class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
 class QTextBrowser;
@@ -19,6 +25,9 @@ class QTreeView;
 
 namespace rbw {
 
+class DerivationView;
+class PlotPanel;
+class SceneView;
 class TraceModel;
 
 class MainWindow : public QMainWindow {
@@ -30,36 +39,93 @@ public:
     // Opens a lesson by folder id ("01-one-step"); false if it cannot be loaded.
     bool openLesson(const QString& id);
     QString currentLessonId() const { return currentLesson_.id; }
+    const QList<Lesson>& lessons() const { return lessons_; }
     TraceModel* traceModel() const { return traceModel_; }
-    const World* world() const { return world_.get(); }
+    const World* world() const { return session_.world(); }
+    Session* session() { return &session_; }
+    SceneView* sceneView() const { return sceneView_; }
+    DerivationView* derivationView() const { return derivationView_; }
+    PlotPanel* plotPanel() const { return plotPanel_; }
+    // The HTML last handed to the derivation view (tests, export).
+    QString derivationHtml() const { return derivationHtml_; }
+    // Every action that has a keyboard shortcut, in menu order (the Help → Keys table).
+    QList<QAction*> shortcutActions() const;
+    // Steps per second of wall time while playing: 0 means one step per frame.
+    double playbackSpeed() const { return speed_; }
 
 public slots:
     void stepOnce();
+    void stepBack();
     void setPlaying(bool playing);
     void resetLesson();
     void copySelection(bool asLatex);
+    void showKeys();
+    // Refreshes the derivation page now, even while playing.
+    void refreshDerivation();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private:
     void createActions();
-    void createLayout();
-    void showTrace();
-    void updateStatus();
+    void createDocks();
+    void createParameterBar();
+    void restoreLayout();
     void onLessonRowChanged(int row);
+    void onSessionReset();
+    void onStepRecorded(const StepTrace& trace);
+    void onStateChanged();
+    void onBlownUp(const QString& message);
+    void onPlayTick();
+    void updateStatus();
+    void syncParameterControls();
+    void exportDerivationHtml();
+    void exportDerivationPdf();
+    void addPushAction(const QString& text, const QKeySequence& key, const Vec3& direction);
+    QAction* addShortcutAction(const QString& text, const QString& objectName, const QList<QKeySequence>& keys);
 
     QList<Lesson> lessons_;
     Lesson currentLesson_;
-    std::unique_ptr<World> world_;
-    StepTrace trace_;
+    Session session_;
 
+    SceneView* sceneView_ = nullptr;
     QListWidget* lessonList_ = nullptr;
+    QTextBrowser* lessonText_ = nullptr;
     QTreeView* traceView_ = nullptr;
     TraceModel* traceModel_ = nullptr;
-    QTextBrowser* lessonText_ = nullptr;
+    DerivationView* derivationView_ = nullptr;
+    PlotPanel* plotPanel_ = nullptr;
     QLabel* statusLabel_ = nullptr;
+    QLabel* alertLabel_ = nullptr;
+    QDockWidget* derivationDock_ = nullptr;
+
+    // Parameter bar.
+    QComboBox* speedBox_ = nullptr;
+    QComboBox* dtBox_ = nullptr;
+    QComboBox* integratorBox_ = nullptr;
+    QCheckBox* gravityBox_ = nullptr;
+    QDoubleSpinBox* restitutionBox_ = nullptr;
+    QDoubleSpinBox* frictionBox_ = nullptr;
+    bool syncing_ = false;
+
     QTimer* playTimer_ = nullptr;
+    QElapsedTimer playClock_;
+    double speed_ = 0.0;
+    double simDebt_ = 0.0;           // simulated seconds owed to real time
+    QElapsedTimer derivationClock_;  // throttles the typeset page while playing
+    bool derivationDirty_ = false;   // the page does not show the current step yet
+    bool traceDirty_ = false;        // nor does the quantities table
+    QString derivationHtml_;
+
+    QList<QAction*> shortcutActions_;
     QAction* stepAction_ = nullptr;
+    QAction* stepBackAction_ = nullptr;
     QAction* playAction_ = nullptr;
     QAction* resetAction_ = nullptr;
+    QAction* torqueAction_ = nullptr;
+    QAction* gravityAction_ = nullptr;
+    QAction* trailsAction_ = nullptr;
+    QList<QAction*> pushActions_;
 };
 
 } // namespace rbw
