@@ -121,6 +121,7 @@ PlotPanel::PlotPanel(QWidget* parent)
     exportMenu->addAction(exportCsvAction_);
     exportButton->setMenu(exportMenu);
     tabs_->setCornerWidget(exportButton, Qt::TopRightCorner);
+    connect(tabs_, &QTabWidget::currentChanged, this, [this](int) { refreshNow(); });
 
     for (const ChartParts& parts : charts_) {
         parts.view->addAction(exportPngAction_);
@@ -226,12 +227,14 @@ void PlotPanel::truncate(int sampleCount)
     const int keep = std::clamp(sampleCount, 0, data_.sampleCount());
     if (keep == data_.sampleCount()) return;
     data_.truncate(keep);
-    if (stride_ == 1 && keep <= displayedSamples_) {
-        // Drop the later points from the chart series themselves: no rebuild needed.
-        for (SeriesParts& s : series_) s.line->removePoints(keep, displayedSamples_ - keep);
-        displayedSamples_ = keep;
-    } else {
-        rebuildDisplay_ = true;
+    for (SeriesParts& s : series_) {
+        if (s.shownStride == 1 && keep <= s.shownSamples) {
+            // Drop the later points from the line itself: no redraw from the data.
+            s.line->removePoints(keep, s.shownSamples - keep);
+            s.shownSamples = keep;
+        } else if (s.shownSamples > 0) {
+            s.shownSamples = -1;   // a bucket was cut: redraw
+        }
     }
     // After a step back the axes fit the remaining data again (no hysteresis).
     for (ChartParts& parts : charts_) parts.hasInput = false;
@@ -242,10 +245,11 @@ void PlotPanel::truncate(int sampleCount)
 void PlotPanel::clear()
 {
     data_.clear();
-    for (SeriesParts& s : series_) s.line->clear();
-    displayedSamples_ = 0;
-    stride_ = 1;
-    rebuildDisplay_ = false;
+    for (SeriesParts& s : series_) {
+        s.line->clear();
+        s.shownSamples = 0;
+        s.shownStride = 1;
+    }
     for (ChartParts& parts : charts_) parts.hasInput = false;
     axesDirty_ = true;
     scheduleRefresh();
@@ -291,8 +295,10 @@ bool PlotPanel::setSeriesVisible(const QString& id, bool visible)
 
 void PlotPanel::applySeriesVisibility(PlotQuantity q, bool visible)
 {
-    const SeriesParts& s = series_[static_cast<std::size_t>(plotIndex(q))];
+    SeriesParts& s = series_[static_cast<std::size_t>(plotIndex(q))];
     const ChartParts& parts = charts_[static_cast<std::size_t>(plotIndex(plotSeriesInfo(q).chart))];
+    // Bring the line up to date before it shows (it is not updated while hidden).
+    if (visible) syncSeries(s, q, strideFor(data_.sampleCount(), maxDisplayPoints_));
     s.line->setVisible(visible);
     // A hidden series leaves the legend too.
     for (QLegendMarker* marker : parts.chart->legend()->markers(s.line)) marker->setVisible(visible);
@@ -303,7 +309,7 @@ void PlotPanel::applySeriesVisibility(PlotQuantity q, bool visible)
 
 PlotChart PlotPanel::currentChart() const
 {
-    return static_cast<PlotChart>(tabs_->currentIndex());
+    return static_cast<PlotChart>(std::max(0, tabs_->currentIndex()));
 }
 
 void PlotPanel::setCurrentChart(PlotChart chart)
@@ -333,7 +339,7 @@ int PlotPanel::displayedPointCount(const QString& id) const
 void PlotPanel::setMaxDisplayPoints(int maxPoints)
 {
     maxDisplayPoints_ = std::max(2, maxPoints);
-    rebuildDisplay_ = true;
+    for (SeriesParts& s : series_) s.shownSamples = -1;
     scheduleRefresh();
 }
 
@@ -354,30 +360,33 @@ void PlotPanel::refreshNow()
 
 void PlotPanel::updateDisplayedPoints()
 {
-    const int n = data_.sampleCount();
-    const int stride = strideFor(n, maxDisplayPoints_);
-    const int shown = displayedSampleCount(n, stride);
-    if (rebuildDisplay_ || stride != stride_ || shown < displayedSamples_) {
-        // The stride changed (or a step back cut into a bucket): redraw from the data.
-        for (const PlotSeriesInfo& info : plotSeriesCatalogue()) {
-            QList<QPointF> pts;
-            pts.reserve(displayPointCount(n, stride));
-            appendDisplayPoints(data_, info.quantity, 0, shown, stride, pts);
-            series_[static_cast<std::size_t>(plotIndex(info.quantity))].line->replace(pts);
-        }
-        stride_ = stride;
-        displayedSamples_ = shown;
-        rebuildDisplay_ = false;
-        return;
-    }
-    if (shown == displayedSamples_) return;
-    // Only the new samples are appended: one signal per series, no rebuild.
+    const int stride = strideFor(data_.sampleCount(), maxDisplayPoints_);
+    const PlotChart current = currentChart();
     for (const PlotSeriesInfo& info : plotSeriesCatalogue()) {
-        QList<QPointF> pts;
-        appendDisplayPoints(data_, info.quantity, displayedSamples_, shown, stride_, pts);
-        series_[static_cast<std::size_t>(plotIndex(info.quantity))].line->append(pts);
+        SeriesParts& s = series_[static_cast<std::size_t>(plotIndex(info.quantity))];
+        // Only what is drawn now; a hidden series or another tab catches up when shown.
+        if (info.chart != current || !s.line->isVisible()) continue;
+        syncSeries(s, info.quantity, stride);
     }
-    displayedSamples_ = shown;
+}
+
+void PlotPanel::syncSeries(SeriesParts& s, PlotQuantity q, int stride)
+{
+    const int shown = displayedSampleCount(data_.sampleCount(), stride);
+    if (s.shownSamples < 0 || stride != s.shownStride || shown < s.shownSamples) {
+        // New stride, or a step back cut into a bucket: redraw from the data.
+        QList<QPointF> pts;
+        pts.reserve(displayPointCount(data_.sampleCount(), stride));
+        appendDisplayPoints(data_, q, 0, shown, stride, pts);
+        s.line->replace(pts);
+    } else if (shown > s.shownSamples) {
+        // Only the new samples are appended: one signal, no redraw from the data.
+        QList<QPointF> pts;
+        appendDisplayPoints(data_, q, s.shownSamples, shown, stride, pts);
+        s.line->append(pts);
+    }
+    s.shownSamples = shown;
+    s.shownStride = stride;
 }
 
 void PlotPanel::updateAxes(PlotChart chart)

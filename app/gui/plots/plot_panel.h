@@ -8,8 +8,12 @@
 //
 // Live updates stay cheap at 60 steps/s for minutes: appendStep() only stores the
 // sample; a timer (at most ~30 Hz) appends the new points to the chart series and
-// rescales the axes; beyond maxDisplayPoints() samples a series is drawn decimated
-// (plot_decimation.h) while points() and the CSV keep every sample.
+// rescales the axes, for the series that are drawn now (visible, current tab);
+// beyond maxDisplayPoints() samples a series is drawn decimated (plot_decimation.h)
+// while points() and the CSV keep every sample. Qt Charts redraws a whole line on
+// every change, so the frame time grows with the points drawn: 4000 per series
+// (2000 min/max buckets, about two per pixel of a full-screen chart) keeps a frame
+// at a few ms where 20 000 took 30-60 ms under Xvfb (measured, see the report).
 #pragma once
 
 #include "app/gui/plots/plot_catalogue.h"
@@ -66,10 +70,13 @@ public:
     // The axis ranges a chart shows now (after refreshNow() they reflect every sample).
     ValueRange xAxisRange(PlotChart chart) const;
     ValueRange yAxisRange(PlotChart chart) const;
-    // How many points the chart draws for a series (fewer than sampleCount() when decimated).
+    // How many points the chart draws for a series (fewer than sampleCount() when
+    // decimated). Only the series drawn now (visible, on the current tab) are kept up
+    // to date; the others catch up when they are shown.
     int displayedPointCount(const QString& id) const;
     int maxDisplayPoints() const { return maxDisplayPoints_; }
-    void setMaxDisplayPoints(int maxPoints);   // at least 2; default 20000
+    void setMaxDisplayPoints(int maxPoints);   // at least 2; default kDefaultMaxDisplayPoints
+    static constexpr int kDefaultMaxDisplayPoints = 4000;
 
     // Applies pending samples to the charts and rescales the axes now instead of at
     // the next timer tick (tests, export).
@@ -98,11 +105,16 @@ private:
     struct SeriesParts {
         QLineSeries* line = nullptr;
         QCheckBox* box = nullptr;
+        // What the line shows: the first shownSamples samples at shownStride;
+        // shownSamples = -1 when it must be redrawn from the data.
+        int shownSamples = 0;
+        int shownStride = 1;
     };
 
     QWidget* buildChartPage(PlotChart chart);
     void scheduleRefresh();
     void updateDisplayedPoints();
+    void syncSeries(SeriesParts& s, PlotQuantity q, int stride);
     void updateAxes(PlotChart chart);
     void applySeriesVisibility(PlotQuantity q, bool visible);
     void exportPngInteractive();
@@ -117,12 +129,8 @@ private:
     std::array<ChartParts, kPlotChartCount> charts_{};
     std::array<SeriesParts, kPlotQuantityCount> series_{};
 
-    // What the chart series show: the first displayedSamples_ samples, at stride_.
-    int displayedSamples_ = 0;
-    int stride_ = 1;
-    bool rebuildDisplay_ = false;
     bool axesDirty_ = true;
-    int maxDisplayPoints_ = 20000;
+    int maxDisplayPoints_ = kDefaultMaxDisplayPoints;
 };
 
 } // namespace rbw
