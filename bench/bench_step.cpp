@@ -21,7 +21,8 @@ rbw::SceneDef freeBodies(int n, bool withForce, bool collisions = false)
     const int side = static_cast<int>(std::ceil(std::sqrt(double(n))));
     for (int i = 0; i < n; ++i) {
         rbw::BodyDef b;
-        b.name = "b" + std::to_string(i);
+        b.name = "b";
+        b.name += std::to_string(i);   // (not "b" + ...: g++ 12 warns -Wrestrict on it)
         b.size = rbw::Vec3(1.0, 0.6, 0.5);
         b.mass = 2.0;
         b.x0_W = rbw::Vec3(2.0 * (i % side), 0.0, 2.0 * (i / side));
@@ -72,6 +73,31 @@ void BM_FreeBodies(benchmark::State& state, bool collisions)
         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
+// The same free bodies in the minimal pipeline (loads, integration, checks) and with
+// every stage forced on (WorldOptions::allStages: gravity with g = 0, the box-box broad
+// and narrow phases, and the plane tests against a far plane that nothing reaches).
+// The difference is what "model only what a scene requires" saves (docs/performance.md).
+void BM_Pipeline(benchmark::State& state, bool allStages, bool energyCheck = true)
+{
+    const int n = static_cast<int>(state.range(0));
+    rbw::SceneDef s = freeBodies(n, false, false);
+    if (!energyCheck) {
+        s.energyJumpFactor = 0.0;   // the minimal pipeline without the energy-jump check
+    }
+    if (allStages) {
+        s.planes.push_back(rbw::PlaneDef{"far", rbw::Vec3(0, -1e6, 0), rbw::Vec3::UnitY()});
+    }
+    rbw::World world(s, rbw::WorldOptions{allStages});
+    for (auto _ : state) {
+        world.step(nullptr);
+        benchmark::DoNotOptimize(world.states().data());
+    }
+    state.SetItemsProcessed(state.iterations() * n);
+    state.counters["ns_per_body_step"] = benchmark::Counter(
+        double(state.iterations()) * n,
+        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 // N unit boxes (M = 1) in a square grid 1.5 m apart, 2 m above a ground plane, each
 // slightly tilted so they land on edges and corners and tumble; gravity, c = 0.5,
 // friction 0.3, position correction on, h = 1/60 (60 Hz).
@@ -88,7 +114,8 @@ rbw::SceneDef dropGrid(int n)
     const int side = static_cast<int>(std::ceil(std::sqrt(double(n))));
     for (int i = 0; i < n; ++i) {
         rbw::BodyDef b;
-        b.name = "box" + std::to_string(i);
+        b.name = "box";
+        b.name += std::to_string(i);
         b.size = rbw::Vec3::Ones();
         b.mass = 1.0;
         b.x0_W = rbw::Vec3(1.5 * (i % side), 2.0 + 0.1 * (i % 7), 1.5 * (i / side));
@@ -131,5 +158,8 @@ BENCHMARK_CAPTURE(BM_EulerStep, trace_off, false)->Arg(1);
 BENCHMARK_CAPTURE(BM_EulerStep, trace_on, true)->Arg(1);
 BENCHMARK_CAPTURE(BM_FreeBodies, collisions_off, false)->Arg(1000);
 BENCHMARK_CAPTURE(BM_FreeBodies, collisions_on, true)->Arg(1000);
+BENCHMARK_CAPTURE(BM_Pipeline, minimal, false)->Arg(1)->Arg(100)->Arg(1000);
+BENCHMARK_CAPTURE(BM_Pipeline, all_stages, true)->Arg(1)->Arg(100)->Arg(1000);
+BENCHMARK_CAPTURE(BM_Pipeline, minimal_no_energy_check, false, false)->Arg(1)->Arg(1000);
 
 BENCHMARK_MAIN();

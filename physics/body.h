@@ -14,6 +14,7 @@
 #include "physics/inertia.h"
 #include "physics/math_types.h"
 
+#include <optional>
 #include <string>
 
 namespace rbw {
@@ -31,6 +32,10 @@ struct BodyDef {
     Vec3 v0_W = Vec3::Zero();
     Vec3 omega0_W = Vec3::Zero();   // omega at t = 0; L0 = I(r0) omega0
 
+    // Per-body variants of the scene's choices, so one scene can compare them side by
+    // side (SceneDef::integratorOf / conventionOf resolve them).
+    std::string integrator;                              // empty: the scene's integrator
+    std::optional<InertiaConvention> inertiaConvention;  // none: the scene's convention
 };
 
 // Constants derived once from a BodyDef (the "model" side, as in MuJoCo's mjModel):

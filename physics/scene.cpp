@@ -120,6 +120,10 @@ std::vector<SceneIssue> validate(const SceneDef& scene)
         if (!b.q0_WB.coeffs().allFinite() || b.q0_WB.norm() == 0.0) {
             out.push_back({at + ".orientation", "must be a finite, non-zero quaternion"});
         }
+        if (!b.integrator.empty() && !makeIntegrator(b.integrator)) {
+            out.push_back({at + ".integrator", "unknown integrator \"" + b.integrator +
+                                                   "\"; known: " + integratorNames()});
+        }
     }
 
     const int nBodies = static_cast<int>(scene.bodies.size());
@@ -179,6 +183,11 @@ std::vector<SceneIssue> validate(const SceneDef& scene)
     checkCoefficient("restitution", scene.restitution, 1.0);
     checkCoefficient("friction", scene.friction, std::numeric_limits<double>::infinity());
     checkCoefficient("restitution_threshold", scene.restitutionThreshold, std::numeric_limits<double>::infinity());
+    if (!(std::isfinite(scene.energyJumpFactor) && (scene.energyJumpFactor == 0.0 || scene.energyJumpFactor >= 1.0))) {
+        out.push_back({"energy_jump.factor", "must be 0 (off) or a finite number >= 1, got " +
+                                                 num(scene.energyJumpFactor)});
+    }
+    checkCoefficient("energy_jump.floor", scene.energyJumpFloor, std::numeric_limits<double>::infinity());
     for (size_t i = 0; i < scene.planes.size(); ++i) {
         const PlaneDef& p = scene.planes[i];
         const std::string at = "planes[" + std::to_string(i) + "]";

@@ -99,6 +99,23 @@ struct SceneDef {
     bool positionCorrection = false;       // push penetrating bodies apart after the impulses
     PlaneContactMode planeContacts = PlaneContactMode::PerPoint;
 
+    // Energy-jump blow-up detection (World::step, docs/stability.md): a step stops the
+    // run when a body's kinetic energy after the integration exceeds
+    //   T_max = factor (T_n + W_n) + floor,
+    // W_n the most work the step's loads can do on it. factor 0 switches it off.
+    double energyJumpFactor = 10.0;         // [-], 0 or >= 1
+    double energyJumpFloor = 1e-9;          // [J], >= 0
+
+    // Body b's integrator and inertia convention: its own, or the scene's.
+    const std::string& integratorOf(int b) const
+    {
+        return bodies[b].integrator.empty() ? integrator : bodies[b].integrator;
+    }
+    InertiaConvention conventionOf(int b) const
+    {
+        return bodies[b].inertiaConvention.value_or(inertiaConvention);
+    }
+
     bool hasGravity() const { return g_W != Vec3::Zero(); }
     int planeIndex(const std::string& planeName) const;   // -1 if none
     // c and mu for a pair (B a body, or the plane planeB when planeB >= 0).

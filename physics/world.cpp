@@ -9,10 +9,35 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdio>
 
 namespace rbw {
 
-World::World(SceneDef scene)
+const char* pipelineStageName(PipelineStage stage)
+{
+    switch (stage) {
+    case PipelineStage::Gravity: return "gravity";
+    case PipelineStage::Loads: return "loads";
+    case PipelineStage::Integration: return "integration";
+    case PipelineStage::FiniteCheck: return "finite_check";
+    case PipelineStage::EnergyCheck: return "energy_check";
+    case PipelineStage::BoxBox: return "box_box";
+    case PipelineStage::BoxPlane: return "box_plane";
+    case PipelineStage::Correction: return "correction";
+    case PipelineStage::Probes: return "probes";
+    }
+    return "?";
+}
+
+std::string PipelineEntry::label() const
+{
+    if (stage == PipelineStage::Integration) {
+        return std::string("integration:") + integrator;
+    }
+    return pipelineStageName(stage);
+}
+
+World::World(SceneDef scene, WorldOptions options)
     : scene_(std::move(scene))
     , integrator_(makeIntegrator(scene_.integrator))
 {
@@ -21,11 +46,19 @@ World::World(SceneDef scene)
     const size_t n = scene_.bodies.size();
     mass_.reserve(n);
     states_.reserve(n);
-    for (const BodyDef& def : scene_.bodies) {
+    conventions_.reserve(n);
+    maxInvInertia_.reserve(n);
+    for (size_t b = 0; b < n; ++b) {
+        const BodyDef& def = scene_.bodies[b];
+        conventions_.push_back(scene_.conventionOf(static_cast<int>(b)));
         mass_.push_back(rbw::massProperties(def));
-        states_.push_back(initialState(def, mass_.back(), scene_.inertiaConvention));
+        states_.push_back(initialState(def, mass_.back(), conventions_.back()));
+        // I0^-1 is diagonal: its largest entry is its largest eigenvalue
+        maxInvInertia_.push_back(mass_.back().I0inv_B.diagonal().maxCoeff());
     }
     loads_.assign(n, BodyLoad{});
+    kineticBefore_.assign(n, 0.0);
+    kineticBound_.assign(n, 0.0);
     movable_.resize(n);
     int movableCount = 0;
     for (size_t b = 0; b < n; ++b) {
@@ -33,7 +66,36 @@ World::World(SceneDef scene)
         movableCount += movable_[b];
     }
     // Box-box contacts need two bodies, at least one of them movable.
-    boxPairsPossible_ = scene_.boxCollisions && n >= 2 && movableCount >= 1;
+    boxPairsPossible_ = (scene_.boxCollisions || options.allStages) && n >= 2 && movableCount >= 1;
+    // Plane tests need a plane and a movable body.
+    planeTestsPossible_ = !scene_.planes.empty() && (movableCount >= 1 || options.allStages);
+    runGravity_ = (scene_.hasGravity() && movableCount >= 1) || options.allStages;
+    runEnergyCheck_ = scene_.energyJumpFactor > 0.0;
+
+    // Integrator groups: the bodies grouped by their integrator's name, in the order
+    // the names first appear; one group of all bodies when no body has its own.
+    groupOf_.assign(n, 0);
+    std::vector<std::string> names;
+    for (size_t b = 0; b < n; ++b) {
+        const std::string& name = scene_.integratorOf(static_cast<int>(b));
+        const auto it = std::find(names.begin(), names.end(), name);
+        groupOf_[b] = static_cast<int>(it - names.begin());
+        if (it == names.end()) {
+            names.push_back(name);
+        }
+    }
+    for (size_t g = 0; g < names.size(); ++g) {
+        IntegratorGroup group;
+        group.integrator = makeIntegrator(names[g]);
+        assert(group.integrator != nullptr);
+        group.all = names.size() == 1;
+        group.active.assign(n, 0);
+        for (size_t b = 0; b < n; ++b) {
+            group.active[b] = groupOf_[b] == static_cast<int>(g) ? 1 : 0;
+        }
+        groups_.push_back(std::move(group));
+    }
+
     for (const TorqueDef& t : scene_.torques) {
         torqueEnabled_.push_back(!t.switchable || t.enabledAtStart ? 1 : 0);
     }
@@ -42,6 +104,59 @@ World::World(SceneDef scene)
         // p_B = R0^T (p0 - x0): the probe's fixed offset in the body frame
         probeOffsets_B_.push_back(s.R_WB.transpose() * (p.p0_W - s.x_W));
     }
+    buildPipeline(options);
+}
+
+void World::buildPipeline(const WorldOptions& /*options*/)
+{
+    pipeline_.clear();
+    if (runGravity_) {
+        pipeline_.push_back({PipelineStage::Gravity, {}, {}});
+    }
+    pipeline_.push_back({PipelineStage::Loads, {}, {}});
+    for (const IntegratorGroup& g : groups_) {
+        PipelineEntry e{PipelineStage::Integration, g.integrator->name(), {}};
+        for (int b = 0; b < static_cast<int>(g.active.size()); ++b) {
+            if (g.active[b] && movable_[b]) {
+                e.bodies.push_back(b);
+            }
+        }
+        if (!e.bodies.empty()) {
+            pipeline_.push_back(std::move(e));
+        }
+    }
+    pipeline_.push_back({PipelineStage::FiniteCheck, {}, {}});
+    if (runEnergyCheck_) {
+        pipeline_.push_back({PipelineStage::EnergyCheck, {}, {}});
+    }
+    if (boxPairsPossible_) {
+        pipeline_.push_back({PipelineStage::BoxBox, {}, {}});
+    }
+    if (planeTestsPossible_) {
+        pipeline_.push_back({PipelineStage::BoxPlane, {}, {}});
+    }
+    if (scene_.positionCorrection && runsCollisionStage()) {
+        pipeline_.push_back({PipelineStage::Correction, {}, {}});
+    }
+    if (!scene_.probes.empty()) {
+        pipeline_.push_back({PipelineStage::Probes, {}, {}});
+    }
+}
+
+std::vector<std::string> World::pipelineLabels() const
+{
+    std::vector<std::string> out;
+    out.reserve(pipeline_.size());
+    for (const PipelineEntry& e : pipeline_) {
+        out.push_back(e.label());
+    }
+    return out;
+}
+
+bool World::runsStage(PipelineStage stage) const
+{
+    return std::any_of(pipeline_.begin(), pipeline_.end(),
+                       [stage](const PipelineEntry& e) { return e.stage == stage; });
 }
 
 void World::applyForceOnce(int body, const Vec3& p_W, const Vec3& f_W)
@@ -94,9 +209,17 @@ StepStatus World::step(StepTrace* trace)
     }
 
     forcesStage(trace);
+    if (runEnergyCheck_) {
+        energyBounds();
+    }
 
-    const IntegrationInput in{scene_.dt, scene_.bodies, mass_, loads_, scene_.inertiaConvention};
-    integrator_->integrate(in, states_, trace);
+    // Integration: each group's integrator advances its own bodies, with each body's
+    // own inertia convention.
+    for (const IntegratorGroup& g : groups_) {
+        const IntegrationInput in{scene_.dt,          scene_.bodies, mass_, loads_, scene_.inertiaConvention,
+                                  &conventions_,      g.all ? nullptr : &g.active};
+        g.integrator->integrate(in, states_, trace);
+    }
     time_ += scene_.dt;
     ++stepIndex_;
     onceForces_.clear();
@@ -105,6 +228,8 @@ StepStatus World::step(StepTrace* trace)
     // would spread the NaN into healthy bodies, and the report would blame them.
     if (!allStatesFinite()) {
         status_ = describeBlowUp();
+    } else if (runEnergyCheck_ && !(status_ = checkEnergyJump()).ok) {
+        // an energy jump: stop before the collision stage, like a non-finite value
     } else if (runsCollisionStage()) {
         collisionStage(trace);
         if (scene_.positionCorrection) {
@@ -127,7 +252,7 @@ StepStatus World::step(StepTrace* trace)
 void World::forcesStage(StepTrace* trace)
 {
     const long k = stepIndex_;
-    const bool gravity = scene_.hasGravity();
+    const bool gravity = runGravity_;
     const int n = static_cast<int>(states_.size());
     for (BodyLoad& l : loads_) {
         l = BodyLoad{};
@@ -235,7 +360,7 @@ void World::collisionStage(StepTrace* trace)
     }
 
     // Box-plane: every corner below a plane is a contact (Napier practical 6).
-    for (int p = 0; p < static_cast<int>(scene_.planes.size()); ++p) {
+    for (int p = 0; planeTestsPossible_ && p < static_cast<int>(scene_.planes.size()); ++p) {
         for (int b = 0; b < n; ++b) {
             if (!movable_[b]) {
                 continue;
@@ -277,7 +402,12 @@ void World::resolveContact(const ContactGeometry& g, int a, int b, int plane, co
         if (-(vA - vB).dot(g.n_W) < scene_.restitutionThreshold) c = 0.0;
     }
     const double mu = scene_.frictionFor(a, b, plane);
-    const ImpulseResult r = applyContactImpulse(g, A, B, c, mu, scene_.inertiaConvention);
+    // The impulse re-derives omega with one convention (A's); a body B with another
+    // convention is re-derived with its own right after.
+    const ImpulseResult r = applyContactImpulse(g, A, B, c, mu, conventions_[a]);
+    if (b >= 0 && conventions_[b] != conventions_[a] && mass_[b].invM != 0.0) {
+        updateDerived(mass_[b], states_[b], conventions_[b]);
+    }
 
     if (scene_.positionCorrection && g.depth > 0.0 && plane < 0) {
         // Box-box: keep the deepest penetration per pair. (Planes re-measure in the
@@ -439,6 +569,7 @@ StepStatus World::describeBlowUp() const
             }
             StepStatus st;
             st.ok = false;
+            st.kind = "non-finite";
             st.step = stepIndex_ - 1;
             st.body = b;
             st.bodyName = scene_.bodies[b].name;
@@ -448,6 +579,72 @@ StepStatus World::describeBlowUp() const
                          "\" is not finite. Try a smaller dt or another integrator.";
             return st;
         }
+    }
+    return StepStatus::success();
+}
+
+void World::energyBounds()
+{
+    const double h = scene_.dt;
+    const double factor = scene_.energyJumpFactor;
+    for (int b = 0; b < static_cast<int>(states_.size()); ++b) {
+        if (!movable_[b]) {
+            continue;
+        }
+        const BodyState& s = states_[b];
+        const MassProperties& mp = mass_[b];
+        const BodyLoad& l = loads_[b];
+        // T_n = 1/2 M |v|^2 + 1/2 omega . L
+        const double T_n = kineticEnergy(mp, s);
+        // W_n: the most work the step's loads can do, from v' = v + h F/M and
+        // L' = L + h q with I^-1 unchanged (docs/stability.md):
+        //   W_n = h |F.v| + h^2 |F|^2 / (2M) + h |q.omega| + h^2 |q|^2 max(I0^-1) / 2
+        const double W_n = h * std::abs(l.F_W.dot(s.v_W)) + 0.5 * h * h * mp.invM * l.F_W.squaredNorm() +
+                           h * std::abs(l.q_W.dot(s.omega_W)) +
+                           0.5 * h * h * maxInvInertia_[b] * l.q_W.squaredNorm();
+        // T_max = factor (T_n + W_n) + floor
+        kineticBefore_[b] = T_n;
+        kineticBound_[b] = factor * (T_n + W_n) + scene_.energyJumpFloor;
+    }
+}
+
+namespace {
+
+std::string joules(double x)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", x);
+    return buf;
+}
+
+} // namespace
+
+StepStatus World::checkEnergyJump() const
+{
+    for (int b = 0; b < static_cast<int>(states_.size()); ++b) {
+        if (!movable_[b]) {
+            continue;
+        }
+        const double T = kineticEnergy(mass_[b], states_[b]);
+        // A bound that overflowed to infinity cannot be exceeded; T is finite here.
+        if (!(T > kineticBound_[b])) {
+            continue;
+        }
+        StepStatus st;
+        st.ok = false;
+        st.kind = "energy-jump";
+        st.step = stepIndex_ - 1;
+        st.body = b;
+        st.bodyName = scene_.bodies[b].name;
+        st.quantity = "kinetic_energy";
+        st.kineticBefore = kineticBefore_[b];
+        st.kineticAfter = T;
+        st.kineticBound = kineticBound_[b];
+        st.message = "simulation blew up in step " + std::to_string(st.step) + ": kinetic_energy of body \"" +
+                     st.bodyName + "\" jumped from " + joules(st.kineticBefore) + " J to " + joules(T) +
+                     " J in one step, above the bound " + joules(st.kineticBound) +
+                     " J. Try a smaller dt or another integrator.";
+        return st;
     }
     return StepStatus::success();
 }

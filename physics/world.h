@@ -1,8 +1,11 @@
 // The world: a scene definition plus the mutable state of its bodies, and the
 // pipeline of stages that one step runs:
-//   forces -> integration -> collision -> correction -> probes.
-// The collision stage runs only when the scene has something that can collide (two
-// bodies with box collisions on, or a plane), and correction only when asked for.
+//   [gravity] -> loads -> integration (one per integrator group) -> finite check
+//   -> [energy check] -> [box-box] -> [box-plane] -> [correction] -> [probes].
+// The world decides once, in its constructor, which stages the scene needs
+// (pipeline()): no gravity work without gravity, no broad/narrow phase or response
+// without a collidable pair, no plane tests without a plane, no correction unless
+// asked for, no probes stage without probes. docs/architecture.md has the table.
 //
 // Data flows one way: SceneDef -> World -> step() -> StepTrace -> every view.
 // No view reaches back into the world to recompute a quantity.
@@ -18,9 +21,44 @@
 #include "physics/trace.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace rbw {
+
+// The stages a step can run, in this order. World::pipeline() lists those it runs.
+enum class PipelineStage {
+    Gravity,       // f_g = M g on every movable body (only with gravity)
+    Loads,         // applied forces, couples and one-step forces (drags, pushes): always
+    Integration,   // one entry per integrator group: x, v, r, L and the derived R, I^-1, omega
+    FiniteCheck,   // the first non-finite value stops the run: always
+    EnergyCheck,   // a body's kinetic-energy jump beyond the bound stops the run
+    BoxBox,        // sweep-and-prune broad phase, SAT narrow phase, impulses
+    BoxPlane,      // corners below each plane, impulses
+    Correction,    // push penetrating bodies apart (position_correction)
+    Probes,        // probe points, when a trace is recorded
+};
+
+const char* pipelineStageName(PipelineStage stage);   // e.g. "box_box"
+
+struct PipelineEntry {
+    PipelineStage stage;
+    std::string integrator;    // Integration only: the integrator's name
+    std::vector<int> bodies;   // Integration only: the bodies it advances (movable ones)
+
+    // "integration:rk4" for an integration entry, else the stage name.
+    std::string label() const;
+};
+
+// Creation options of a world that are not part of a scene.
+struct WorldOptions {
+    // Run every stage whether the scene needs it or not: gravity (also with g = 0), the
+    // box-box broad and narrow phases for any two bodies (also with box_collisions off)
+    // and the plane tests against the scene's planes. For benchmarks that measure what
+    // the minimal pipeline saves; results equal the minimal pipeline's as long as no
+    // two bodies touch when box_collisions is off.
+    bool allStages = false;
+};
 
 struct ProbeReading {
     int body = -1;
@@ -40,12 +78,15 @@ struct WorldSnapshot {
 class World {
 public:
     // The scene must be valid (validate(scene) empty); front ends check that first.
-    explicit World(SceneDef scene);
+    explicit World(SceneDef scene, WorldOptions options = {});
 
     const SceneDef& scene() const { return scene_; }
     const std::vector<BodyState>& states() const { return states_; }
     const std::vector<MassProperties>& massProperties() const { return mass_; }
+    // The scene's integrator; a body may have its own (integratorOf).
     const Integrator& integrator() const { return *integrator_; }
+    const Integrator& integratorOf(int body) const { return *groups_[groupOf_[body]].integrator; }
+    InertiaConvention conventionOf(int body) const { return conventions_[body]; }
     long stepIndex() const { return stepIndex_; }   // the next step to take is k = stepIndex()
     double time() const { return time_; }
     const StepStatus& status() const { return status_; }
@@ -74,7 +115,12 @@ public:
     WorldSnapshot snapshot() const;
     void restore(const WorldSnapshot& s);
 
-    bool runsCollisionStage() const { return boxPairsPossible_ || !scene_.planes.empty(); }
+    // The stages a step runs, decided once when the world is built (see the top).
+    const std::vector<PipelineEntry>& pipeline() const { return pipeline_; }
+    std::vector<std::string> pipelineLabels() const;
+    bool runsStage(PipelineStage stage) const;
+
+    bool runsCollisionStage() const { return boxPairsPossible_ || planeTestsPossible_; }
     // The broad phase's counts in the last step (zero when it did not run).
     const BroadPhaseStats& lastBroadPhaseStats() const { return lastBroadPhase_; }
 
@@ -91,11 +137,33 @@ private:
     bool allStatesFinite() const;
     // The first non-finite quantity, as a status that names step, body and quantity.
     StepStatus describeBlowUp() const;
+    // Before the integration: each movable body's T_n and its bound T_max.
+    void energyBounds();
+    // After it: the first body with T_{n+1} > T_max, as a blow-up status (or success).
+    StepStatus checkEnergyJump() const;
+    void buildPipeline(const WorldOptions& options);
+
+    // The bodies one integrator advances.
+    struct IntegratorGroup {
+        std::unique_ptr<Integrator> integrator;
+        std::vector<char> active;   // per body
+        bool all = false;           // every body: pass no mask
+    };
 
     SceneDef scene_;
     std::vector<MassProperties> mass_;
+    std::vector<InertiaConvention> conventions_;   // per body: its own or the scene's
     std::vector<Vec3> probeOffsets_B_;   // p0 in the body frame: R0^T (p0 - x0)
-    std::unique_ptr<Integrator> integrator_;
+    std::unique_ptr<Integrator> integrator_;   // the scene's
+    std::vector<IntegratorGroup> groups_;
+    std::vector<int> groupOf_;                 // per body: index into groups_
+    std::vector<PipelineEntry> pipeline_;
+    bool runGravity_ = false;
+    bool runEnergyCheck_ = false;
+    bool planeTestsPossible_ = false;
+    std::vector<double> maxInvInertia_;   // per body: largest entry of I0^-1 (diagonal) [1/(kg m^2)]
+    std::vector<double> kineticBefore_;   // energy check scratch: T_n per body [J]
+    std::vector<double> kineticBound_;    // T_max per body [J]
 
     std::vector<BodyState> states_;
     std::vector<BodyLoad> loads_;

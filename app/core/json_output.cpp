@@ -7,19 +7,6 @@
 
 namespace rbw {
 
-QJsonObject diagnosticsToJson(const Diagnostics& d)
-{
-    return QJsonObject{
-        {"kinetic_energy_translational", d.kineticTranslational},
-        {"kinetic_energy_rotational", d.kineticRotational},
-        {"kinetic_energy", d.kinetic},
-        {"potential_energy", d.potential},
-        {"total_energy", d.total},
-        {"linear_momentum", jsonVec3(d.P_W)},
-        {"angular_momentum_origin", jsonVec3(d.L_O_W)},
-    };
-}
-
 namespace {
 
 QJsonValue bodyName(const SceneDef& scene, int body)
@@ -30,7 +17,42 @@ QJsonValue bodyName(const SceneDef& scene, int body)
     return QString::fromStdString(scene.bodies[body].name);
 }
 
+QString conventionName(InertiaConvention c)
+{
+    return c == InertiaConvention::Standard ? QStringLiteral("standard") : QStringLiteral("course-template");
+}
+
 } // namespace
+
+QJsonObject diagnosticsToJson(const Diagnostics& d, const SceneDef* scene)
+{
+    // bodies[]: each body's own part, in scene order (named when the scene is known).
+    QJsonArray bodies;
+    for (int b = 0; b < static_cast<int>(d.bodies.size()); ++b) {
+        const BodyDiagnostics& db = d.bodies[b];
+        QJsonObject o{
+            {"kinetic_energy_translational", db.kineticTranslational},
+            {"kinetic_energy_rotational", db.kineticRotational},
+            {"kinetic_energy", db.kinetic},
+            {"angular_momentum", jsonVec3(db.L_W)},
+            {"angular_momentum_norm", db.L_norm},
+        };
+        if (scene != nullptr && b < static_cast<int>(scene->bodies.size())) {
+            o.insert("body", bodyName(*scene, b));
+        }
+        bodies.append(o);
+    }
+    return QJsonObject{
+        {"kinetic_energy_translational", d.kineticTranslational},
+        {"kinetic_energy_rotational", d.kineticRotational},
+        {"kinetic_energy", d.kinetic},
+        {"potential_energy", d.potential},
+        {"total_energy", d.total},
+        {"linear_momentum", jsonVec3(d.P_W)},
+        {"angular_momentum_origin", jsonVec3(d.L_O_W)},
+        {"bodies", bodies},
+    };
+}
 
 QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene)
 {
@@ -78,7 +100,7 @@ QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene)
         {"time", trace.time},
         {"quantities", quantities},
         {"contacts", contacts},
-        {"diagnostics", diagnosticsToJson(trace.diagnostics)},
+        {"diagnostics", diagnosticsToJson(trace.diagnostics, &scene)},
     };
 }
 
@@ -91,6 +113,8 @@ QJsonObject runToJson(const World& world, const std::vector<StepTrace>& traces, 
         bodies.append(QJsonObject{
             {"name", QString::fromStdString(scene.bodies[b].name)},
             {"fixed", scene.bodies[b].fixed},
+            {"integrator", QString::fromLatin1(world.integratorOf(b).name())},
+            {"inertia_convention", conventionName(world.conventionOf(b))},
             {"position", jsonVec3(s.x_W)},
             {"orientation", jsonQuat(s.q_WB)},
             {"linear_velocity", jsonVec3(s.v_W)},
@@ -118,22 +142,21 @@ QJsonObject runToJson(const World& world, const std::vector<StepTrace>& traces, 
         {"scene", QString::fromStdString(scene.name)},
         {"file", sceneFile},
         {"integrator", QString::fromLatin1(world.integrator().name())},
-        {"inertia_convention",
-         scene.inertiaConvention == InertiaConvention::Standard ? "standard" : "course-template"},
+        {"inertia_convention", conventionName(scene.inertiaConvention)},
         {"dt", scene.dt},
         {"steps", static_cast<qint64>(world.stepIndex())},
         {"time", world.time()},
         {"status", "ok"},
         {"bodies", bodies},
         {"probes", probes},
-        {"diagnostics", diagnosticsToJson(world.diagnostics())},
+        {"diagnostics", diagnosticsToJson(world.diagnostics(), &scene)},
         {"trace", traceArray},
     };
 }
 
 QJsonObject blowUpToJson(const StepStatus& status, const QString& sceneFile)
 {
-    return QJsonObject{
+    QJsonObject o{
         {"file", sceneFile},
         {"status", "blow-up"},
         {"step", static_cast<qint64>(status.step)},
@@ -141,6 +164,16 @@ QJsonObject blowUpToJson(const StepStatus& status, const QString& sceneFile)
         {"quantity", QString::fromStdString(status.quantity)},
         {"message", QString::fromStdString(status.message)},
     };
+    if (!status.kind.empty()) {
+        o.insert("kind", QString::fromStdString(status.kind));
+    }
+    // An energy jump: T before and after the step and the bound, all finite numbers.
+    if (status.kind == "energy-jump") {
+        o.insert("kinetic_energy_before", status.kineticBefore);
+        o.insert("kinetic_energy_after", status.kineticAfter);
+        o.insert("kinetic_energy_bound", status.kineticBound);
+    }
+    return o;
 }
 
 } // namespace rbw

@@ -14,7 +14,8 @@
 
 namespace rbw {
 
-QJsonObject diagnosticsToJson(const Diagnostics& d);
+// The totals, and bodies[] with each body's own part (named when scene is given).
+QJsonObject diagnosticsToJson(const Diagnostics& d, const SceneDef* scene = nullptr);
 
 // { step, time, quantities: [ {id, stage, body, index?, symbol, formula, frame, unit, kind, value} ] }
 QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene);

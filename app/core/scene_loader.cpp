@@ -203,11 +203,24 @@ Quat toOrientation(const QJsonValue& v, const QString& path)
     return Quat(Eigen::AngleAxisd(angle, axis.normalized()));
 }
 
+InertiaConvention toConvention(const QJsonValue& v, const QString& path)
+{
+    const QString c = toString(v, path);
+    if (c == "standard") {
+        return InertiaConvention::Standard;
+    }
+    if (c == "course-template") {
+        return InertiaConvention::CourseTemplate;
+    }
+    throw FieldError{path, QStringLiteral("must be \"standard\" or \"course-template\", got \"%1\"").arg(c)};
+}
+
 BodyDef toBody(const QJsonValue& v, const QString& path)
 {
     const QJsonObject o = toObject(v, path);
     checkKeys(o, path, {"name", "size", "mass", "fixed", "position", "orientation",
-                        "linear_velocity", "angular_velocity", "angular_response"});
+                        "linear_velocity", "angular_velocity", "angular_response", "integrator",
+                        "inertia_convention"});
     BodyDef b;
     b.name = toString(require(o, path, "name"), join(path, "name")).toStdString();
     b.size = toVec3(require(o, path, "size"), join(path, "size"));
@@ -230,6 +243,16 @@ BodyDef toBody(const QJsonValue& v, const QString& path)
                             : true;
     if (b.fixed && (b.v0_W != Vec3::Zero() || b.omega0_W != Vec3::Zero())) {
         throw FieldError{path, QStringLiteral("a fixed body cannot have a velocity")};
+    }
+    // Per-body variants of the scene's integrator and convention (compared side by side).
+    if (o.contains("integrator")) {
+        b.integrator = toString(o.value("integrator"), join(path, "integrator")).toStdString();
+        if (b.integrator.empty()) {
+            throw FieldError{join(path, "integrator"), QStringLiteral("must name an integrator (see `rbw integrators`)")};
+        }
+    }
+    if (o.contains("inertia_convention")) {
+        b.inertiaConvention = toConvention(o.value("inertia_convention"), join(path, "inertia_convention"));
     }
     return b;
 }
@@ -370,7 +393,7 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
     checkKeys(o, QString(), {"name", "description", "dt", "steps", "integrator", "inertia_convention",
                              "gravity", "bodies", "forces", "torques", "push", "probes", "planes", "box_collisions",
                              "restitution", "restitution_threshold", "friction", "pairs", "position_correction",
-                             "plane_contacts"});
+                             "plane_contacts", "energy_jump"});
     SceneDef s;
     s.name = o.contains("name") ? toString(o.value("name"), "name").toStdString()
                                 : QFileInfo(fileLabel).completeBaseName().toStdString();
@@ -381,15 +404,7 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
     s.integrator = o.contains("integrator") ? toString(o.value("integrator"), "integrator").toStdString()
                                             : std::string("explicit-euler");
     if (o.contains("inertia_convention")) {
-        const QString c = toString(o.value("inertia_convention"), "inertia_convention");
-        if (c == "standard") {
-            s.inertiaConvention = InertiaConvention::Standard;
-        } else if (c == "course-template") {
-            s.inertiaConvention = InertiaConvention::CourseTemplate;
-        } else {
-            throw FieldError{"inertia_convention",
-                             QStringLiteral("must be \"standard\" or \"course-template\", got \"%1\"").arg(c)};
-        }
+        s.inertiaConvention = toConvention(o.value("inertia_convention"), "inertia_convention");
     }
     s.g_W = vec3Or(o, QString(), "gravity", Vec3::Zero());
 
@@ -451,6 +466,21 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
     }
     if (o.contains("position_correction")) {
         s.positionCorrection = toBool(o.value("position_correction"), "position_correction");
+    }
+    if (o.contains("energy_jump")) {
+        // { "factor": 2, "floor": 1e-9 }: the energy-jump blow-up bound (docs/stability.md)
+        const QJsonObject e = toObject(o.value("energy_jump"), "energy_jump");
+        checkKeys(e, "energy_jump", {"factor", "floor"});
+        if (e.contains("factor")) {
+            s.energyJumpFactor = toNumber(e.value("factor"), "energy_jump.factor");
+            if (s.energyJumpFactor != 0.0 && s.energyJumpFactor < 1.0) {
+                throw FieldError{"energy_jump.factor",
+                                 QStringLiteral("must be 0 (off) or a number >= 1, got %1").arg(s.energyJumpFactor)};
+            }
+        }
+        if (e.contains("floor")) {
+            s.energyJumpFloor = coefficient(e.value("floor"), "energy_jump.floor", false);
+        }
     }
     if (o.contains("plane_contacts")) {
         const QString mode = toString(o.value("plane_contacts"), "plane_contacts");

@@ -11,7 +11,7 @@ void ExplicitEuler::integrate(const IntegrationInput& in, std::vector<BodyState>
 {
     const double h = in.h;
     for (int b = 0; b < static_cast<int>(states.size()); ++b) {
-        if (in.defs[b].fixed) {
+        if (!in.advances(b)) {
             continue;
         }
         BodyState& s = states[b];
@@ -46,12 +46,12 @@ void ExplicitEuler::integrate(const IntegrationInput& in, std::vector<BodyState>
         record(trace, q::angular_momentum, b, s.L_W);
 
         // Steps 6-7: R = R(r), I^-1 = R I0^-1 R^T, omega = I^-1 L
-        updateDerived(mp, s, in.convention);
+        updateDerived(mp, s, in.conventionOf(b));
         if (trace != nullptr) {
             trace->add(q::inertia_body, b, mp.I0_B);
             trace->add(q::inverse_inertia_body, b, mp.I0inv_B);
             trace->add(q::rotation_matrix, b, s.R_WB);
-            trace->add(in.convention == InertiaConvention::CourseTemplate
+            trace->add(in.conventionOf(b) == InertiaConvention::CourseTemplate
                            ? q::inverse_inertia_world_template
                            : q::inverse_inertia_world,
                        b, s.Iinv_W);

@@ -13,7 +13,7 @@ void ImplicitGyroscopic::integrate(const IntegrationInput& in, std::vector<BodyS
 {
     const double h = in.h;
     for (int b = 0; b < static_cast<int>(states.size()); ++b) {
-        if (in.defs[b].fixed) {
+        if (!in.advances(b)) {
             continue;
         }
         BodyState& s = states[b];
@@ -26,7 +26,7 @@ void ImplicitGyroscopic::integrate(const IntegrationInput& in, std::vector<BodyS
         s.x_W += h * s.v_W;
         record(trace, q::se_position, b, s.x_W);
 
-        if (in.convention == InertiaConvention::CourseTemplate) {
+        if (in.conventionOf(b) == InertiaConvention::CourseTemplate) {
             // No body frame turns with omega here: symplectic Euler on L (see the header).
             s.L_W += h * load.q_W;
             record(trace, q::se_angular_momentum, b, s.L_W);
@@ -35,8 +35,8 @@ void ImplicitGyroscopic::integrate(const IntegrationInput& in, std::vector<BodyS
             s.q_WB.coeffs() += h * orientationRate(omega1_W, s.q_WB).coeffs();
             s.q_WB = normalisedOrientation(s.q_WB);
             record(trace, q::se_orientation, b, s.q_WB);
-            updateDerived(mp, s, in.convention);
-            recordDerived(trace, b, mp, s, in.convention);
+            updateDerived(mp, s, in.conventionOf(b));
+            recordDerived(trace, b, mp, s, in.conventionOf(b));
             continue;
         }
 
@@ -80,8 +80,8 @@ void ImplicitGyroscopic::integrate(const IntegrationInput& in, std::vector<BodyS
         record(trace, q::gyroscopic_angular_momentum, b, s.L_W);
 
         // R = R(r), I^-1 = R I0^-1 R^T, omega = I^-1 L (= omega' up to rounding)
-        updateDerived(mp, s, in.convention);
-        recordDerived(trace, b, mp, s, in.convention);
+        updateDerived(mp, s, in.conventionOf(b));
+        recordDerived(trace, b, mp, s, in.conventionOf(b));
     }
 }
 

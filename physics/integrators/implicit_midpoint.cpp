@@ -98,7 +98,7 @@ void ImplicitMidpoint::integrate(const IntegrationInput& in, std::vector<BodySta
 {
     const double h = in.h;
     for (int b = 0; b < static_cast<int>(states.size()); ++b) {
-        if (in.defs[b].fixed) {
+        if (!in.advances(b)) {
             continue;
         }
         BodyState& s = states[b];
@@ -113,10 +113,10 @@ void ImplicitMidpoint::integrate(const IntegrationInput& in, std::vector<BodySta
         record(trace, q::verlet_position, b, s.x_W);
         s.L_W += halfDL_W;
 
-        if (in.convention == InertiaConvention::CourseTemplate) {
+        if (in.conventionOf(b) == InertiaConvention::CourseTemplate) {
             // r_{n+1} = p r_n with omega_m = I^-1(r_m) L  (fixed point, see the header)
             const Vec3 omega0_W = s.Iinv_W * s.L_W;
-            const SolveResult sol = solveWorldMidpoint(s.q_WB, s.L_W, omega0_W, mp, h, in.convention);
+            const SolveResult sol = solveWorldMidpoint(s.q_WB, s.L_W, omega0_W, mp, h, in.conventionOf(b));
             record(trace, q::midpoint_world_angular_velocity, b, sol.value);
             record(trace, q::fixed_point_iterations, b, double(sol.iterations));
             record(trace, q::fixed_point_residual, b, sol.residual);
@@ -156,8 +156,8 @@ void ImplicitMidpoint::integrate(const IntegrationInput& in, std::vector<BodySta
         record(trace, q::half_kick_angular_momentum, b, s.L_W);
 
         // R = R(r), I^-1 = R I0^-1 R^T, omega = I^-1 L
-        updateDerived(mp, s, in.convention);
-        recordDerived(trace, b, mp, s, in.convention);
+        updateDerived(mp, s, in.conventionOf(b));
+        recordDerived(trace, b, mp, s, in.conventionOf(b));
     }
 }
 

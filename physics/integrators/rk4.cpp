@@ -9,7 +9,7 @@ void Rk4::integrate(const IntegrationInput& in, std::vector<BodyState>& states, 
 {
     const double h = in.h;
     for (int b = 0; b < static_cast<int>(states.size()); ++b) {
-        if (in.defs[b].fixed) {
+        if (!in.advances(b)) {
             continue;
         }
         BodyState& s = states[b];
@@ -18,16 +18,16 @@ void Rk4::integrate(const IntegrationInput& in, std::vector<BodyState>& states, 
         const RigidOdeState y0{s.x_W, s.v_W, s.q_WB, s.L_W};
 
         // k1 = f(y_n)
-        const RigidOdeRate k1 = rigidOdeRate(y0, mp, load, in.convention);
+        const RigidOdeRate k1 = rigidOdeRate(y0, mp, load, in.conventionOf(b));
         recordRkStage(trace, b, 1, k1);
         // k2 = f(y_n + h/2 k1)
-        const RigidOdeRate k2 = rigidOdeRate(advanced(y0, 0.5 * h, k1), mp, load, in.convention);
+        const RigidOdeRate k2 = rigidOdeRate(advanced(y0, 0.5 * h, k1), mp, load, in.conventionOf(b));
         recordRkStage(trace, b, 2, k2);
         // k3 = f(y_n + h/2 k2)
-        const RigidOdeRate k3 = rigidOdeRate(advanced(y0, 0.5 * h, k2), mp, load, in.convention);
+        const RigidOdeRate k3 = rigidOdeRate(advanced(y0, 0.5 * h, k2), mp, load, in.conventionOf(b));
         recordRkStage(trace, b, 3, k3);
         // k4 = f(y_n + h k3)
-        const RigidOdeRate k4 = rigidOdeRate(advanced(y0, h, k3), mp, load, in.convention);
+        const RigidOdeRate k4 = rigidOdeRate(advanced(y0, h, k3), mp, load, in.conventionOf(b));
         recordRkStage(trace, b, 4, k4);
 
         // y_{n+1} = y_n + h/6 (k1 + 2 k2 + 2 k3 + k4)
@@ -45,8 +45,8 @@ void Rk4::integrate(const IntegrationInput& in, std::vector<BodyState>& states, 
         record(trace, q::rk4_angular_momentum, b, s.L_W);
 
         // R = R(r), I^-1 = R I0^-1 R^T, omega = I^-1 L
-        updateDerived(mp, s, in.convention);
-        recordDerived(trace, b, mp, s, in.convention);
+        updateDerived(mp, s, in.conventionOf(b));
+        recordDerived(trace, b, mp, s, in.conventionOf(b));
     }
 }
 

@@ -18,7 +18,7 @@ void integrateRotationMatrix(const IntegrationInput& in, std::vector<BodyState>&
 {
     const double h = in.h;
     for (int b = 0; b < static_cast<int>(states.size()); ++b) {
-        if (in.defs[b].fixed) {
+        if (!in.advances(b)) {
             continue;
         }
         BodyState& s = states[b];
@@ -58,13 +58,13 @@ void integrateRotationMatrix(const IntegrationInput& in, std::vector<BodyState>&
         record(trace, q::angular_momentum, b, s.L_W);
 
         // I^-1 = R I0^-1 R^T with this R (drifted unless orthonormalised), omega = I^-1 L
-        s.Iinv_W = inverseInertiaWorld(s.R_WB, mp.I0inv_B, in.convention);
+        s.Iinv_W = inverseInertiaWorld(s.R_WB, mp.I0inv_B, in.conventionOf(b));
         s.omega_W = s.Iinv_W * s.L_W;
         if (trace != nullptr) {
             // as recordDerived(), without R: its row is the update above
             trace->add(q::inertia_body, b, mp.I0_B);
             trace->add(q::inverse_inertia_body, b, mp.I0inv_B);
-            trace->add(in.convention == InertiaConvention::CourseTemplate ? q::inverse_inertia_world_template
+            trace->add(in.conventionOf(b) == InertiaConvention::CourseTemplate ? q::inverse_inertia_world_template
                                                                           : q::inverse_inertia_world,
                        b, s.Iinv_W);
             trace->add(q::angular_velocity, b, s.omega_W);

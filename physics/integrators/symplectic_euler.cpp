@@ -11,7 +11,7 @@ void SymplecticEuler::integrate(const IntegrationInput& in, std::vector<BodyStat
 {
     const double h = in.h;
     for (int b = 0; b < static_cast<int>(states.size()); ++b) {
-        if (in.defs[b].fixed) {
+        if (!in.advances(b)) {
             continue;
         }
         BodyState& s = states[b];
@@ -41,8 +41,8 @@ void SymplecticEuler::integrate(const IntegrationInput& in, std::vector<BodyStat
         record(trace, q::se_orientation, b, s.q_WB);
 
         // R = R(r), I^-1 = R I0^-1 R^T, omega = I^-1 L
-        updateDerived(mp, s, in.convention);
-        recordDerived(trace, b, mp, s, in.convention);
+        updateDerived(mp, s, in.conventionOf(b));
+        recordDerived(trace, b, mp, s, in.conventionOf(b));
     }
 }
 
