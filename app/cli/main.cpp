@@ -5,13 +5,16 @@
 #include "app/core/json_output.h"
 #include "app/core/lesson_catalogue.h"
 #include "app/core/scene_loader.h"
+#include "app/core/study_csv.h"
 #include "physics/integrator_registry.h"
+#include "physics/lab/study.h"
 #include "physics/world.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
 #include <QJsonDocument>
+#include <QSaveFile>
 #include <QTextStream>
 
 #include <cmath>
@@ -118,6 +121,73 @@ int runScene(const QCommandLineParser& parser, const QString& sceneFile)
     return kExitOk;
 }
 
+// rbw study SCENE [--integrators a,b] [--dt h1,h2] [--t-end T] [--output FILE]:
+// every integrator at every h against the scene's exact answer, as CSV
+// (physics/lab/study.h, app/core/study_csv.h). Progress goes to stderr.
+int runStudyCommand(const QCommandLineParser& parser, const QString& sceneFile)
+{
+    rbw::SceneLoadResult loaded = rbw::loadSceneFile(sceneFile);
+    if (!loaded.ok()) {
+        for (const QString& e : loaded.errors) err() << "rbw: " << e << '\n';
+        err().flush();
+        return kExitBadInput;
+    }
+    const rbw::SceneDef scene = std::move(*loaded.scene);
+    auto studyError = [&sceneFile](const QString& field, const QString& reason) {
+        return badInput(sceneFile + ": " + field + ": " + reason);
+    };
+
+    rbw::lab::StudyConfig config;
+    if (parser.isSet("integrators")) {
+        for (const QString& name : parser.value("integrators").split(',')) {
+            config.integrators.push_back(name.trimmed().toStdString());
+        }
+    }
+    if (parser.isSet("dt")) {
+        for (const QString& text : parser.value("dt").split(',')) {
+            bool ok = false;
+            const double dt = text.trimmed().toDouble(&ok);
+            if (!ok) return studyError("dt", "must be a finite number > 0, got \"" + text.trimmed() + "\"");
+            config.dts.push_back(dt);
+        }
+    }
+    if (parser.isSet("t-end")) {
+        bool ok = false;
+        const double T = parser.value("t-end").toDouble(&ok);
+        if (!ok) return studyError("t_end", "must be a finite number > 0, got \"" + parser.value("t-end") + "\"");
+        config.tEnd = T;
+    }
+    const std::vector<rbw::SceneIssue> issues = rbw::lab::validateStudy(scene, config);
+    if (!issues.empty()) {
+        for (const rbw::SceneIssue& i : issues) {
+            err() << "rbw: " << sceneFile << ": " << QString::fromStdString(i.path) << ": "
+                  << QString::fromStdString(i.reason) << '\n';
+        }
+        err().flush();
+        return kExitBadInput;
+    }
+
+    const rbw::lab::StudyResult result = rbw::lab::runStudy(scene, config, [](int done, int total) {
+        err() << "rbw: study: " << done << "/" << total << " runs\n";
+        err().flush();
+    });
+    err() << "rbw: study: exact reference: " << QString::fromStdString(result.reference) << ", t_end = "
+          << result.tEnd << " s\n";
+    err().flush();
+    const QString csv = rbw::studyToCsv(result);
+    if (!parser.isSet("output")) {
+        out() << csv;
+        out().flush();
+        return kExitOk;
+    }
+    // QSaveFile: the file appears complete or not at all
+    QSaveFile file(parser.value("output"));
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text) || file.write(csv.toUtf8()) < 0 || !file.commit()) {
+        return badInput(parser.value("output") + ": output: cannot write: " + file.errorString());
+    }
+    return kExitOk;
+}
+
 int listLessons()
 {
     const QList<rbw::Lesson> lessons = rbw::lessonCatalogue();
@@ -156,22 +226,28 @@ int main(int argc, char* argv[])
         "Commands:\n"
         "  run SCENE.json    run a scene and print its state, diagnostics and step trace\n"
         "  lessons           list the lessons with their one-line descriptions\n"
-        "  integrators       list the integrators a scene can choose\n\n"
+        "  integrators       list the integrators a scene can choose\n"
+        "  study SCENE.json  every integrator at every dt against the scene's exact answer (CSV)\n\n"
         "Exit status: 0 success, 2 bad input (the message names the file, field and reason),\n"
         "3 the simulation blew up (the message names the step, body and quantity).\n\n"
         "Example:\n"
         "  rbw run lessons/01-one-step/scene.json\n"
-        "  rbw run lessons/01-one-step/scene.json --steps 100 --dt 0.01 --format csv");
+        "  rbw run lessons/01-one-step/scene.json --steps 100 --dt 0.01 --format csv\n"
+        "  rbw study lessons/10-accuracy-lab/scene.json --integrators explicit-euler,rk4 --dt 0.1,0.01");
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument("command", "run, lessons or integrators");
-    parser.addPositionalArgument("scene", "the scene file, for run", "[SCENE.json]");
+    parser.addPositionalArgument("command", "run, study, lessons or integrators");
+    parser.addPositionalArgument("scene", "the scene file, for run and study", "[SCENE.json]");
     parser.addOptions({
         {"steps", "Number of steps to take (default: the scene's \"steps\").", "N"},
-        {"dt", "Time step h in seconds (default: the scene's \"dt\").", "H"},
+        {"dt", "Time step h in seconds (default: the scene's \"dt\"). For study: a comma-separated list "
+               "(default: 0.1,0.05,0.02,0.01,0.005,0.002,0.001).", "H"},
         {"integrator", "Integrator name (see `rbw integrators`).", "NAME"},
         {"trace", "Which step traces to print: none, last or all.", "none|last|all", "last"},
         {"format", "Output format: json (one document) or csv (one row per step).", "json|csv", "json"},
+        {"integrators", "For study: comma-separated integrator names (default: all).", "A,B,..."},
+        {"t-end", "For study: end time T in seconds, the same for every run (default: steps x dt of the scene).", "T"},
+        {"output", "For study: write the CSV to FILE instead of standard output.", "FILE"},
     });
     if (!parser.parse(QCoreApplication::arguments())) {
         return badInput(parser.errorText() + " (see rbw --help)");
@@ -190,6 +266,10 @@ int main(int argc, char* argv[])
     if (command == "run") {
         if (args.size() != 2) return badInput("run takes exactly one scene file (see rbw --help)");
         return runScene(parser, args[1]);
+    }
+    if (command == "study") {
+        if (args.size() != 2) return badInput("study takes exactly one scene file (see rbw --help)");
+        return runStudyCommand(parser, args[1]);
     }
     if (command == "lessons" && args.size() == 1) return listLessons();
     if (command == "integrators" && args.size() == 1) return listIntegrators();

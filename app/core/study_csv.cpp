@@ -1,0 +1,56 @@
+#include "app/core/study_csv.h"
+
+#include <QLocale>
+
+namespace rbw {
+
+namespace {
+
+// The shortest text that reads back as the same double ("0.1", not "0.10000000000000001")
+QString number(double x) { return QString::number(x, 'g', QLocale::FloatingPointShortest); }
+
+QString field(const std::optional<double>& x) { return x ? number(*x) : QString(); }
+
+QString quoted(const QString& text)
+{
+    // RFC 4180: a field with a comma or a quote is quoted, quotes doubled
+    if (!text.contains(',') && !text.contains('"')) return text;
+    QString q = text;
+    q.replace('"', "\"\"");
+    return '"' + q + '"';
+}
+
+} // namespace
+
+QStringList studyCsvHeader()
+{
+    return {"integrator", "dt", "steps", "t_end", "position_error", "orientation_error", "omega_error",
+            "energy_drift", "momentum_drift", "ns_per_step", "status"};
+}
+
+QString studyCsvRow(const lab::StudyRow& row)
+{
+    const QStringList fields{
+        quoted(QString::fromStdString(row.integrator)),
+        number(row.dt),
+        QString::number(row.steps),
+        number(row.tEnd),
+        field(row.positionError),
+        field(row.orientationError),
+        field(row.omegaError),
+        field(row.energyDrift),
+        field(row.momentumDrift),
+        field(row.nsPerStep),
+        quoted(QString::fromStdString(row.statusText())),
+    };
+    return fields.join(',');
+}
+
+QString studyToCsv(const lab::StudyResult& result)
+{
+    QString text = studyCsvHeader().join(',') + '\n';
+    for (const lab::StudyRow& row : result.rows) text += studyCsvRow(row) + '\n';
+    return text;
+}
+
+} // namespace rbw

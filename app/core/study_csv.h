@@ -1,0 +1,22 @@
+// CSV of an accuracy study (physics/lab/study.h): a header, then one row per
+// integrator x dt:
+//   integrator,dt,steps,t_end,position_error,orientation_error,omega_error,
+//   energy_drift,momentum_drift,ns_per_step,status
+// Numbers are written in the shortest form that reads back as the same double. A field the run
+// has no number for (a blown-up run, or a drift without a reference value) is empty,
+// never NaN; status is "ok" or "blown up at step k". Formatting only: the numbers
+// come from the study.
+#pragma once
+
+#include "physics/lab/study.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace rbw {
+
+QStringList studyCsvHeader();
+QString studyCsvRow(const lab::StudyRow& row);
+QString studyToCsv(const lab::StudyResult& result);   // header + rows, '\n' line ends
+
+} // namespace rbw
