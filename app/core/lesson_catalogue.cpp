@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -37,8 +38,24 @@ QList<Lesson> lessonCatalogue(const QString& directory)
             continue;
         }
         const QJsonObject o = QJsonDocument::fromJson(file.readAll()).object();
-        lessons.append(Lesson{id, o.value("name").toString(id), o.value("description").toString(),
-                              scenePath, dir.filePath(id + "/lesson.md")});
+        const QString textPath = dir.filePath(id + "/lesson.md");
+        lessons.append(Lesson{id, o.value("name").toString(id), o.value("description").toString(), scenePath,
+                              textPath, false});
+        // Variants: the folder's other scene files, e.g. 07-bounce/impulses.json.
+        const QDir folder(dir.filePath(id));
+        for (const QString& variant : folder.entryList({"*.json"}, QDir::Files, QDir::Name)) {
+            if (variant == QLatin1String("scene.json")) {
+                continue;
+            }
+            QFile v(folder.filePath(variant));
+            if (!v.open(QIODevice::ReadOnly)) {
+                continue;
+            }
+            const QString variantId = id + '/' + QFileInfo(variant).completeBaseName();
+            const QJsonObject vo = QJsonDocument::fromJson(v.readAll()).object();
+            lessons.append(Lesson{variantId, vo.value("name").toString(variantId), vo.value("description").toString(),
+                                  folder.filePath(variant), textPath, true});
+        }
     }
     return lessons;
 }

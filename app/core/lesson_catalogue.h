@@ -1,6 +1,7 @@
 // The lessons: one folder each under lessons/, holding scene.json (whose "name" and
 // "description" give the title and the one-line summary) and lesson.md (what to
-// compute by hand and what to notice). Folders are listed in name order, so the
+// compute by hand and what to notice). Any other scene file in the folder is a
+// variant of the lesson, listed after it with the id "folder/file" (no ".json"). Folders are listed in name order, so the
 // number prefix ("01-one-step") fixes the order.
 #pragma once
 
@@ -15,6 +16,7 @@ struct Lesson {
     QString description;   // scene "description"
     QString scenePath;
     QString textPath;      // lesson.md, may not exist
+    bool variant = false;  // another scene file of the lesson's folder; id "folder/file"
 };
 
 // $RBW_LESSONS_DIR if set, else lessons/ beside or above the executable, else the

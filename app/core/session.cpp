@@ -26,17 +26,15 @@ void Session::reset()
     pendingPushes_.clear();
     history_.clear();
     world_ = std::make_unique<World>(edited_);
-    history_.push(HistoryEntry{world_->snapshot(), StepTrace{}, false});
+    history_.push(HistoryEntry{world_->snapshot(), CompactTrace{}, false});
+    hasCurrent_ = false;
     emit sessionReset();
     emit stateChanged();
 }
 
 const StepTrace* Session::currentTrace() const
 {
-    if (history_.empty() || !history_.back().hasTrace) {
-        return nullptr;
-    }
-    return &history_.back().trace;
+    return hasCurrent_ ? &current_ : nullptr;
 }
 
 const StepStatus& Session::status() const
@@ -145,8 +143,10 @@ bool Session::stepQuiet()
         emit stateChanged();
         return false;
     }
-    history_.push(HistoryEntry{world_->snapshot(), scratch_, true});
-    emit stepRecorded(history_.back().trace);
+    history_.push(HistoryEntry{world_->snapshot(), CompactTrace(scratch_), true});
+    current_ = scratch_;
+    hasCurrent_ = true;
+    emit stepRecorded(current_);
     return true;
 }
 
@@ -178,6 +178,8 @@ bool Session::stepBack()
     // The world at the earlier state, exactly: its snapshot holds every body's state,
     // the step counter, the time and the switches.
     world_->restore(history_.back().state);
+    hasCurrent_ = history_.back().hasTrace;
+    current_ = hasCurrent_ ? history_.back().trace.unpack() : StepTrace{};
     pendingPushes_.clear();
     emit rewound(world_->stepIndex());
     emit stateChanged();

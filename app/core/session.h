@@ -103,6 +103,8 @@ private:
     std::unique_ptr<World> world_;
     StepHistory history_;
     StepTrace scratch_;
+    StepTrace current_;          // the current state's trace, unpacked
+    bool hasCurrent_ = false;
     std::optional<MouseSpring> grab_;
     std::vector<std::pair<Vec3, Vec3>> pendingPushes_;   // (p_W, f_W)
 };

@@ -1,12 +1,12 @@
 // The history behind Step back: the last N states of the world, each with the trace
 // of the step that produced it, so that stepping back shows the earlier step's
-// numbers exactly as they were computed (they are stored, not recomputed).
+// numbers exactly as they were computed (they are stored, packed, not recomputed).
 //
 // A ring buffer: when full, the oldest entry is dropped. Entry 0 is the oldest state
 // still kept; back() is the current one.
 #pragma once
 
-#include "physics/trace.h"
+#include "app/core/compact_trace.h"
 #include "physics/world.h"
 
 #include <cstddef>
@@ -16,7 +16,7 @@ namespace rbw {
 
 struct HistoryEntry {
     WorldSnapshot state;   // the world after the step
-    StepTrace trace;       // that step's trace (empty for the initial state)
+    CompactTrace trace;    // that step's trace, packed (empty for the initial state)
     bool hasTrace = false;
 };
 

@@ -1,6 +1,7 @@
 #include "app/gui/main_window.h"
 
 #include "app/core/scene_loader.h"
+#include "app/gui/accuracy/accuracy_panel.h"
 #include "app/gui/derivation/derivation_builder.h"
 #include "app/gui/derivation/derivation_view.h"
 #include "app/gui/plots/plot_panel.h"
@@ -30,6 +31,7 @@
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTableWidget>
@@ -49,14 +51,46 @@ namespace {
 
 // Wall-clock budget of one play tick: the GUI stays responsive at any speed.
 constexpr double kTickBudgetMs = 12.0;
-// While playing, the typeset page is refreshed at most this often.
-constexpr qint64 kDerivationIntervalMs = 500;
 
 QString plainText(const QAction* a)
 {
     QString t = a->text();
     t.remove('&');
     return t;
+}
+
+// Scenes with more bodies than this write out one body (and its contacts) at a time.
+constexpr int kDerivationAllBodiesMax = 6;
+// While playing, the quantities table is refreshed at most this often.
+constexpr qint64 kTableIntervalMs = 250;
+
+// The part of a trace about one body: its own rows, the world-level rows, and the
+// contacts it takes part in (renumbered 0, 1, ... in their order). A selection of
+// the recorded entries, nothing recomputed.
+StepTrace focusTrace(const StepTrace& trace, int body)
+{
+    StepTrace out;
+    out.step = trace.step;
+    out.time = trace.time;
+    out.diagnostics = trace.diagnostics;
+    std::vector<int> renumber(trace.contacts.size(), -1);
+    for (size_t c = 0; c < trace.contacts.size(); ++c) {
+        const ContactHeader& h = trace.contacts[c];
+        if (h.bodyA == body || h.bodyB == body) {
+            renumber[c] = static_cast<int>(out.contacts.size());
+            out.contacts.push_back(h);
+        }
+    }
+    for (const TraceEntry& e : trace.entries) {
+        if (e.info->stage == Stage::Collision && e.index >= 0) {
+            if (e.index < static_cast<int>(renumber.size()) && renumber[e.index] >= 0) {
+                out.entries.push_back(TraceEntry{e.info, e.body, renumber[e.index], e.value});
+            }
+        } else if (e.body == body || e.body < 0) {
+            out.entries.push_back(e);
+        }
+    }
+    return out;
 }
 
 // The page shown before the first step: nothing is computed yet.
@@ -119,6 +153,10 @@ MainWindow::MainWindow(QWidget* parent)
     connect(&session_, &Session::blownUp, this, &MainWindow::onBlownUp);
 
     connect(sceneView_, &SceneView::grabStarted, this, [this](int body, QVector3D hit) {
+        if (focusBody_ != body) {
+            focusBody_ = body;   // the derivation of a many-body scene follows this box
+            derivationDirty_ = true;
+        }
         session_.beginGrab(body, Vec3(hit.x(), hit.y(), hit.z()));
     });
     connect(sceneView_, &SceneView::grabMoved, this, [this](QVector3D target) {
@@ -128,7 +166,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     resize(1360, 740);
     restoreLayout();
-    derivationClock_.start();
+    tableClock_.start();
 }
 
 MainWindow::~MainWindow() = default;
@@ -371,7 +409,8 @@ void MainWindow::createDocks()
     lessonList_ = new QListWidget;
     lessonList_->setObjectName("lessonList");
     for (const Lesson& l : lessons_) {
-        auto* item = new QListWidgetItem(QStringLiteral("%1  %2").arg(l.id.left(2), l.title));
+        auto* item = new QListWidgetItem(l.variant ? QStringLiteral("      ↳ %1").arg(l.title)
+                                                   : QStringLiteral("%1  %2").arg(l.id.left(2), l.title));
         item->setToolTip(l.description);
         item->setData(Qt::UserRole, l.id);
         lessonList_->addItem(item);
@@ -406,7 +445,7 @@ void MainWindow::createDocks()
             traceView_->resizeColumnToContents(c);
             // Long symbols (the J denominator terms) must not push the values off screen.
             if (c == TraceModel::SymbolColumn || c == TraceModel::QuantityColumn) {
-                traceView_->setColumnWidth(c, std::min(traceView_->columnWidth(c), 170));
+                traceView_->setColumnWidth(c, std::min(traceView_->columnWidth(c), c == TraceModel::SymbolColumn ? 70 : 190));
             }
         }
     });
@@ -425,7 +464,6 @@ void MainWindow::createDocks()
     connect(derivationDock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible && derivationDirty_) refreshDerivation();
     });
-    traceDock->raise();
 
     plotPanel_ = new PlotPanel;
     plotPanel_->setObjectName("plotPanel");
@@ -433,6 +471,21 @@ void MainWindow::createDocks()
     plotDock->setObjectName("plotDock");
     plotDock->setWidget(plotPanel_);
     addDockWidget(Qt::BottomDockWidgetArea, plotDock);
+
+    accuracyPanel_ = new AccuracyPanel;
+    accuracyPanel_->setObjectName("accuracyPanel");
+    auto* accuracyDock = new QDockWidget(tr("Accuracy"), this);
+    accuracyDock->setObjectName("accuracyDock");
+    // The panel (chart, table, settings) needs more room than the bottom strip has at
+    // 1366x768: it scrolls there, and fills the screen when the dock is floated.
+    auto* accuracyScroll = new QScrollArea;
+    accuracyScroll->setWidgetResizable(true);
+    accuracyScroll->setWidget(accuracyPanel_);
+    accuracyScroll->setMinimumSize(200, 120);
+    accuracyDock->setWidget(accuracyScroll);
+    addDockWidget(Qt::RightDockWidgetArea, accuracyDock);
+    tabifyDockWidget(derivationDock_, accuracyDock);
+    traceDock->raise();
 
     resizeDocks({lessonsDock, traceDock}, {250, 540}, Qt::Horizontal);
     resizeDocks({lessonsDock, textDock}, {190, 420}, Qt::Vertical);
@@ -477,6 +530,7 @@ void MainWindow::onLessonRowChanged(int row)
     setPlaying(false);
     alertLabel_->hide();
     if (row < 0 || row >= lessons_.size()) return;
+    focusBody_ = -1;
     currentLesson_ = lessons_[row];
 
     QFile text(currentLesson_.textPath);
@@ -495,6 +549,7 @@ void MainWindow::onLessonRowChanged(int row)
     }
     QSettings().setValue("lesson/last", currentLesson_.id);
     session_.load(*loaded.scene);   // -> onSessionReset, onStateChanged
+    accuracyPanel_->setScene(*loaded.scene, currentLesson_.id);
     sceneView_->resetView();
     setWindowTitle(tr("%1 — Rigid Body Workbook").arg(currentLesson_.title));
 }
@@ -531,32 +586,55 @@ void MainWindow::onStateChanged()
     const StepTrace* trace = session_.currentTrace();
     sceneView_->setSnapshot(makeViewSnapshot(*world, trace));
     sceneView_->setSpring(session_.springSegment());
-    if (traceDirty_) {
+    const bool playing = playTimer_->isActive();
+    const bool panelsDue = !playing || tableClock_.elapsed() >= kTableIntervalMs;
+    if (traceDirty_ && panelsDue) {
         // A new step (or step back, or reset): the table shows its trace.
         if (trace != nullptr) traceModel_->setTrace(*trace, world->scene());
         else traceModel_->clear();
         traceDirty_ = false;
     }
-    if (derivationDirty_ && (!playTimer_->isActive() || derivationClock_.elapsed() >= kDerivationIntervalMs)) {
-        refreshDerivation();
+    // The typeset page follows when the run pauses: typesetting at every frame would
+    // cost more than the step itself.
+    if (derivationDirty_ && !playing) refreshDerivation();
+    // While playing, the controls and the status line change only at the table's
+    // pace: every repainted widget is re-uploaded for the GL composition of the window.
+    if (panelsDue) {
+        syncParameterControls();
+        updateStatus();
+        tableClock_.restart();
     }
-    syncParameterControls();
-    updateStatus();
 }
 
 void MainWindow::refreshDerivation()
 {
     if (!session_.isLoaded()) return;
-    derivationClock_.restart();
-    if (playTimer_->isActive() && !derivationView_->isVisible()) {
-        return;   // tabbed away while playing: built when shown or when play stops
-    }
     const StepTrace* trace = session_.currentTrace();
+    const SceneDef& scene = session_.world()->scene();
     if (trace == nullptr) {
         derivationHtml_ = introPage(currentLesson_);
     } else {
         const QString lessonDir = QFileInfo(currentLesson_.scenePath).absolutePath();
-        derivationHtml_ = buildLessonDerivation(*trace, session_.world()->scene(), lessonDir).html;
+        const int n = static_cast<int>(scene.bodies.size());
+        if (n <= kDerivationAllBodiesMax) {
+            derivationHtml_ = buildLessonDerivation(*trace, scene, lessonDir).html;
+        } else {
+            // Many bodies: one at a time, the one last grabbed (else the first movable).
+            int focus = focusBody_;
+            if (focus < 0 || focus >= n) {
+                focus = 0;
+                while (focus < n - 1 && scene.bodies[focus].fixed) ++focus;
+            }
+            derivationHtml_ = buildLessonDerivation(focusTrace(*trace, focus), scene, lessonDir).html;
+            const QString note =
+                tr("<p class=\"focus-note\" style=\"background:#fff4d6;padding:6px 10px;border-radius:4px\">"
+                   "This scene has %1 bodies: the page writes out <b>%2</b> and its contacts. "
+                   "Press on another box in the 3D view to follow it.</p>")
+                    .arg(n)
+                    .arg(QString::fromStdString(scene.bodies[focus].name).toHtmlEscaped());
+            derivationHtml_.replace(QLatin1String("<main class=\"derivation\">"),
+                                    QLatin1String("<main class=\"derivation\">") + note);
+        }
     }
     derivationView_->showStep(derivationHtml_);
     derivationDirty_ = false;
@@ -598,7 +676,7 @@ void MainWindow::setPlaying(bool playing)
         playTimer_->start();
     } else {
         playTimer_->stop();
-        if (derivationDirty_) refreshDerivation();
+        onStateChanged();   // the table, page and status catch up with the last step
     }
     if (playAction_->isChecked() != playing) playAction_->setChecked(playing);
     playAction_->setText(playing ? tr("&Pause") : tr("&Play"));
@@ -696,6 +774,13 @@ void MainWindow::syncParameterControls()
     const SceneDef& scene = world->scene();
     if (!dtBox_->lineEdit()->hasFocus()) dtBox_->setEditText(QString::number(scene.dt, 'g', 10));
     integratorBox_->setCurrentText(QString::fromStdString(scene.integrator));
+    // A lesson that compares integrators side by side sets one per body: the box
+    // would change only the bodies without their own.
+    const bool perBody = std::any_of(scene.bodies.begin(), scene.bodies.end(),
+                                     [](const BodyDef& b) { return !b.integrator.empty(); });
+    integratorBox_->setEnabled(!perBody);
+    integratorBox_->setToolTip(perBody ? tr("This lesson sets an integrator for each body (see the lesson text)")
+                                       : tr("The integrator of every body"));
     gravityBox_->setChecked(scene.hasGravity());
     const bool collides = world->runsCollisionStage();
     restitutionBox_->setEnabled(collides);

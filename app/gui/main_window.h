@@ -25,6 +25,7 @@ class QTreeView;
 
 namespace rbw {
 
+class AccuracyPanel;
 class DerivationView;
 class PlotPanel;
 class SceneView;
@@ -46,6 +47,7 @@ public:
     SceneView* sceneView() const { return sceneView_; }
     DerivationView* derivationView() const { return derivationView_; }
     PlotPanel* plotPanel() const { return plotPanel_; }
+    AccuracyPanel* accuracyPanel() const { return accuracyPanel_; }
     // The HTML last handed to the derivation view (tests, export).
     QString derivationHtml() const { return derivationHtml_; }
     // Every action that has a keyboard shortcut, in menu order (the Help → Keys table).
@@ -95,6 +97,7 @@ private:
     TraceModel* traceModel_ = nullptr;
     DerivationView* derivationView_ = nullptr;
     PlotPanel* plotPanel_ = nullptr;
+    AccuracyPanel* accuracyPanel_ = nullptr;
     QLabel* statusLabel_ = nullptr;
     QLabel* alertLabel_ = nullptr;
     QDockWidget* derivationDock_ = nullptr;
@@ -112,7 +115,8 @@ private:
     QElapsedTimer playClock_;
     double speed_ = 0.0;
     double simDebt_ = 0.0;           // simulated seconds owed to real time
-    QElapsedTimer derivationClock_;  // throttles the typeset page while playing
+    QElapsedTimer tableClock_;       // throttles the quantities table while playing
+    int focusBody_ = -1;             // the body a many-body derivation writes out
     bool derivationDirty_ = false;   // the page does not show the current step yet
     bool traceDirty_ = false;        // nor does the quantities table
     QString derivationHtml_;

@@ -335,6 +335,8 @@ void TestDerivationBuilder::lessonTemplatesCoverTheirSteps_data()
     QTest::newRow("05") << QStringLiteral("05-spinning") << 20;
     QTest::newRow("06") << QStringLiteral("06-box-on-plane") << 60;
     QTest::newRow("07") << QStringLiteral("07-bounce") << 600;
+    QTest::newRow("08") << QStringLiteral("08-conventions") << 1000;
+    QTest::newRow("09") << QStringLiteral("09-tennis-racket") << 2000;
 }
 
 void TestDerivationBuilder::lessonTemplatesCoverTheirSteps()

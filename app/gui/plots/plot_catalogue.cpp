@@ -23,7 +23,7 @@ const std::array<PlotSeriesInfo, kPlotQuantityCount> kSeries{{
 }};
 
 const std::array<PlotChartInfo, kPlotChartCount> kCharts{{
-    {C::Energy, "Energy", "energy [J]"},
+    {C::Energy, "Energy", "E [J]"},
     {C::LinearMomentum, "Momentum P", "P [kg·m/s]"},
     {C::AngularMomentum, "Ang. momentum L_O", "L_O [kg·m²/s]"},
 }};

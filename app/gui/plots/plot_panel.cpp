@@ -34,8 +34,8 @@ namespace rbw {
 
 namespace {
 
-// At most ~30 repaints per second, however fast the steps come.
-constexpr int kRefreshIntervalMs = 33;
+// At most ~10 repaints per second, however fast the steps come.
+constexpr int kRefreshIntervalMs = 100;
 constexpr qreal kExportPixelRatio = 2.0;
 constexpr int kAxisTickCount = 5;
 
@@ -149,7 +149,8 @@ QWidget* PlotPanel::buildChartPage(PlotChart which)
     parts.chart->setAnimationOptions(QChart::NoAnimation);
     parts.chart->setBackgroundRoundness(0);
     parts.chart->setMargins(QMargins(2, 2, 6, 2));
-    parts.chart->legend()->setAlignment(Qt::AlignTop);
+    // On the right: the dock is wider than it is tall.
+    parts.chart->legend()->setAlignment(Qt::AlignRight);
     parts.chart->legend()->setFont(smallFont);
 
     parts.xAxis = new QValueAxis(parts.chart);

@@ -7,13 +7,15 @@
 // number each series is. Nothing physical is computed here.
 //
 // Live updates stay cheap at 60 steps/s for minutes: appendStep() only stores the
-// sample; a timer (at most ~30 Hz) appends the new points to the chart series and
+// sample; a timer (at most ~10 Hz) appends the new points to the chart series and
 // rescales the axes, for the series that are drawn now (visible, current tab);
 // beyond maxDisplayPoints() samples a series is drawn decimated (plot_decimation.h)
 // while points() and the CSV keep every sample. Qt Charts redraws a whole line on
-// every change, so the frame time grows with the points drawn: 4000 per series
-// (2000 min/max buckets, about two per pixel of a full-screen chart) keeps a frame
-// at a few ms where 20 000 took 30-60 ms under Xvfb (measured, see the report).
+// every change, so the frame time grows with the points drawn: 1200 per series
+// (600 min/max buckets, about one per pixel of the docked chart) keeps a frame at a
+// few ms where 20 000 took 30-60 ms under Xvfb. Stroking the lines is the app's
+// largest cost on the GUI thread while playing (perf, lesson 4 with 50 boxes), so
+// the plots refresh at 10 Hz: the 3D view is what moves smoothly.
 #pragma once
 
 #include "app/gui/plots/plot_catalogue.h"
@@ -76,7 +78,7 @@ public:
     int displayedPointCount(const QString& id) const;
     int maxDisplayPoints() const { return maxDisplayPoints_; }
     void setMaxDisplayPoints(int maxPoints);   // at least 2; default kDefaultMaxDisplayPoints
-    static constexpr int kDefaultMaxDisplayPoints = 4000;
+    static constexpr int kDefaultMaxDisplayPoints = 1200;
 
     // Applies pending samples to the charts and rescales the axes now instead of at
     // the next timer tick (tests, export).

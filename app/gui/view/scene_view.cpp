@@ -305,9 +305,10 @@ void SceneView::fitToScene()
 {
     const view::Bounds b = view::bodyBounds(snapshot_);
     if (b.valid()) {
-        // The bounding sphere of the bodies' box, widened by half a reference length so
-        // that arrows (about one box long) starting on the bodies stay in view.
-        const double radius = 0.5 * (b.max_W - b.min_W).norm() + 0.5 * view::referenceLength(snapshot_);
+        // The bounding sphere of the bodies' box, widened by one reference
+        // lengths so that arrows (up to one box long) starting at corners and probes
+        // off the bodies stay in view.
+        const double radius = 0.5 * (b.max_W - b.min_W).norm() + 1.0 * view::referenceLength(snapshot_);
         camera_.frame(0.5 * (b.min_W + b.max_W), radius, aspect());
     } else {
         camera_.frame(Vec3::Zero(), 1.0, aspect());
