@@ -121,6 +121,7 @@ private slots:
     void pushKeysInLesson2();
     void keysDialogListsEveryShortcut();
     void settingsRememberLessonAndLayout();
+    void parameterKeysChangeTheScene();
     void resetClearsTrace();
 };
 
@@ -432,7 +433,9 @@ void TestApp::keysDialogListsEveryShortcut()
     QVERIFY(withKeys >= 20);
     // Every control the issue names has a key.
     for (const char* name : {"actionStep", "actionStepBack", "actionPlay", "actionReset", "actionSlower", "actionFaster",
-                             "actionGravity", "actionToggleTorque", "actionTrails", "actionFit", "actionResetView"}) {
+                             "actionGravity", "actionToggleTorque", "actionTrails", "actionFit", "actionResetView",
+                             "actionHalveDt", "actionDoubleDt", "actionNextIntegrator", "actionMoreRestitution",
+                             "actionLessRestitution", "actionMoreFriction", "actionLessFriction"}) {
         QVERIFY2(!w.findChild<QAction*>(name)->shortcuts().isEmpty(), name);
     }
     dialog->close();
@@ -455,6 +458,29 @@ void TestApp::settingsRememberLessonAndLayout()
     QVERIFY(QTest::qWaitForWindowExposed(&again));
     QVERIFY(!again.findChild<QDockWidget*>("plotDock")->isVisible());
     QSettings().clear();
+}
+
+void TestApp::parameterKeysChangeTheScene()
+{
+    // h, the integrator, c and mu each have a key (Help -> Keys lists them).
+    MainWindow w;
+    QVERIFY(w.openLesson("07-bounce"));
+    const double h = w.world()->scene().dt;
+    w.findChild<QAction*>("actionHalveDt")->trigger();
+    QCOMPARE(w.world()->scene().dt, h / 2);
+    w.findChild<QAction*>("actionDoubleDt")->trigger();
+    QCOMPARE(w.world()->scene().dt, h);
+    const std::string integrator = w.world()->scene().integrator;
+    w.findChild<QAction*>("actionNextIntegrator")->trigger();
+    QVERIFY(w.world()->scene().integrator != integrator);
+    w.findChild<QAction*>("actionPreviousIntegrator")->trigger();
+    QCOMPARE(w.world()->scene().integrator, integrator);
+    const double c = w.world()->scene().restitution;
+    w.findChild<QAction*>("actionLessRestitution")->trigger();
+    QVERIFY(std::abs(w.world()->scene().restitution - (c - 0.05)) < 1e-12);
+    const double mu = w.world()->scene().friction;
+    w.findChild<QAction*>("actionMoreFriction")->trigger();
+    QVERIFY(std::abs(w.world()->scene().friction - (mu + 0.05)) < 1e-12);
 }
 
 void TestApp::resetClearsTrace()

@@ -220,6 +220,27 @@ void MainWindow::createActions()
     addPushAction(tr("Push +z"), QKeySequence(Qt::CTRL | Qt::Key_PageUp), Vec3(0, 0, 1));
     addPushAction(tr("Push −z"), QKeySequence(Qt::CTRL | Qt::Key_PageDown), Vec3(0, 0, -1));
 
+    // Keys for the parameter bar's controls.
+    auto* halveDt = addShortcutAction(tr("Halve h"), "actionHalveDt", {QKeySequence(Qt::Key_H)});
+    connect(halveDt, &QAction::triggered, this, [this] { scaleDt(0.5); });
+    auto* doubleDt = addShortcutAction(tr("Double h"), "actionDoubleDt", {QKeySequence(Qt::SHIFT | Qt::Key_H)});
+    connect(doubleDt, &QAction::triggered, this, [this] { scaleDt(2.0); });
+    auto* nextIntegrator = addShortcutAction(tr("Next integrator"), "actionNextIntegrator", {QKeySequence(Qt::Key_I)});
+    connect(nextIntegrator, &QAction::triggered, this, [this] { cycleIntegrator(+1); });
+    auto* previousIntegrator = addShortcutAction(tr("Previous integrator"), "actionPreviousIntegrator",
+                                                 {QKeySequence(Qt::SHIFT | Qt::Key_I)});
+    connect(previousIntegrator, &QAction::triggered, this, [this] { cycleIntegrator(-1); });
+    auto* moreC = addShortcutAction(tr("Restitution c + 0.05"), "actionMoreRestitution", {QKeySequence(Qt::Key_C)});
+    connect(moreC, &QAction::triggered, this, [this] { restitutionBox_->stepUp(); });
+    auto* lessC = addShortcutAction(tr("Restitution c − 0.05"), "actionLessRestitution",
+                                    {QKeySequence(Qt::SHIFT | Qt::Key_C)});
+    connect(lessC, &QAction::triggered, this, [this] { restitutionBox_->stepDown(); });
+    auto* moreMu = addShortcutAction(tr("Friction μ + 0.05"), "actionMoreFriction", {QKeySequence(Qt::Key_U)});
+    connect(moreMu, &QAction::triggered, this, [this] { frictionBox_->stepUp(); });
+    auto* lessMu = addShortcutAction(tr("Friction μ − 0.05"), "actionLessFriction", {QKeySequence(Qt::SHIFT | Qt::Key_U)});
+    connect(lessMu, &QAction::triggered, this, [this] { frictionBox_->stepDown(); });
+    parameterActions_ = {halveDt, doubleDt, nextIntegrator, previousIntegrator, moreC, lessC, moreMu, lessMu};
+
     trailsAction_ = addShortcutAction(tr("Motion &trails"), "actionTrails", {QKeySequence(Qt::Key_T)});
     trailsAction_->setCheckable(true);
     trailsAction_->setChecked(true);
@@ -278,6 +299,8 @@ void MainWindow::createActions()
     simMenu->addActions({stepBackAction_, stepAction_, playAction_, resetAction_, slower, faster});
     simMenu->addSeparator();
     simMenu->addActions({gravityAction_, torqueAction_});
+    QMenu* parameterMenu = simMenu->addMenu(tr("P&arameters"));
+    parameterMenu->addActions(parameterActions_);
     QMenu* pushMenu = simMenu->addMenu(tr("&Push (single-body lesson)"));
     pushMenu->addActions(pushActions_);
     simMenu->addSeparator();
@@ -295,6 +318,22 @@ void MainWindow::createActions()
     bar->setObjectName("simulationToolBar");
     bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
     bar->addActions({stepBackAction_, stepAction_, playAction_, resetAction_});
+}
+
+void MainWindow::scaleDt(double factor)
+{
+    if (!session_.isLoaded()) return;
+    QString error;
+    if (!session_.setDt(session_.world()->scene().dt * factor, &error)) statusBar()->showMessage(error, 5000);
+}
+
+void MainWindow::cycleIntegrator(int direction)
+{
+    if (!integratorBox_->isEnabled() || integratorBox_->count() == 0) return;
+    const int n = integratorBox_->count();
+    const int next = (integratorBox_->currentIndex() + direction + n) % n;
+    QString error;
+    if (!session_.setIntegrator(integratorBox_->itemText(next), &error)) statusBar()->showMessage(error, 5000);
 }
 
 void MainWindow::addPushAction(const QString& text, const QKeySequence& key, const Vec3& direction)

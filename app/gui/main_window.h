@@ -83,6 +83,8 @@ private:
     void syncParameterControls();
     void exportDerivationHtml();
     void exportDerivationPdf();
+    void scaleDt(double factor);
+    void cycleIntegrator(int direction);
     void addPushAction(const QString& text, const QKeySequence& key, const Vec3& direction);
     QAction* addShortcutAction(const QString& text, const QString& objectName, const QList<QKeySequence>& keys);
 
@@ -130,6 +132,7 @@ private:
     QAction* gravityAction_ = nullptr;
     QAction* trailsAction_ = nullptr;
     QList<QAction*> pushActions_;
+    QList<QAction*> parameterActions_;
 };
 
 } // namespace rbw
