@@ -7,6 +7,7 @@
 // tst_collision_lessons.cpp, the plots' diagnostics against the rbw CLI.
 #include "app/gui/derivation/derivation_view.h"
 #include "app/gui/main_window.h"
+#include "app/gui/plots/body_plot_panel.h"
 #include "app/gui/plots/plot_panel.h"
 #include "app/gui/trace_model.h"
 #include "app/gui/view/scene_view.h"
@@ -122,6 +123,7 @@ private slots:
     void keysDialogListsEveryShortcut();
     void settingsRememberLessonAndLayout();
     void parameterKeysChangeTheScene();
+    void perBodyPlotsShowLesson9sIntegrators();
     void resetClearsTrace();
 };
 
@@ -481,6 +483,34 @@ void TestApp::parameterKeysChangeTheScene()
     const double mu = w.world()->scene().friction;
     w.findChild<QAction*>("actionMoreFriction")->trigger();
     QVERIFY(std::abs(w.world()->scene().friction - (mu + 0.05)) < 1e-12);
+}
+
+void TestApp::perBodyPlotsShowLesson9sIntegrators()
+{
+    // Lesson 9: three identical boxes, one per integrator (explicit Euler, RK4,
+    // implicit midpoint; see tst_tennis_racket.cpp). The per-body plot holds each
+    // body's T and |L| exactly as the physics recorded them, one sample per step.
+    MainWindow w;
+    QVERIFY(w.openLesson("09-tennis-racket"));
+    auto* step = w.findChild<QAction*>("actionStep");
+    const int steps = 300;
+    for (int k = 0; k < steps; ++k) step->trigger();
+    BodyPlotPanel* p = w.bodyPlotPanel();
+    QCOMPARE(p->sampleCount(), steps + 1);
+    const Diagnostics& d = w.session()->currentTrace()->diagnostics;
+    QCOMPARE(static_cast<int>(d.bodies.size()), 3);
+    for (int b = 0; b < 3; ++b) {
+        QCOMPARE(p->points(BodyPlotPanel::KineticEnergy, b).last().y(), d.bodies[b].kinetic);
+        QCOMPARE(p->points(BodyPlotPanel::AngularMomentumNorm, b).last().y(), d.bodies[b].L_norm);
+    }
+    // Explicit Euler's T rises (docs/stability.md); implicit midpoint's stays put to
+    // rounding. Body order as in the scene: explicit Euler first, implicit midpoint last.
+    const QList<QPointF> euler = p->points(BodyPlotPanel::KineticEnergy, 0);
+    const QList<QPointF> midpoint = p->points(BodyPlotPanel::KineticEnergy, 2);
+    QVERIFY(euler.last().y() > euler.first().y() * (1 + 1e-6));
+    QVERIFY(std::abs(midpoint.last().y() - midpoint.first().y()) <= 1e-12 * midpoint.first().y());
+    w.findChild<QAction*>("actionStepBack")->trigger();
+    QCOMPARE(p->sampleCount(), steps);
 }
 
 void TestApp::resetClearsTrace()

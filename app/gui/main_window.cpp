@@ -4,6 +4,7 @@
 #include "app/gui/accuracy/accuracy_panel.h"
 #include "app/gui/derivation/derivation_builder.h"
 #include "app/gui/derivation/derivation_view.h"
+#include "app/gui/plots/body_plot_panel.h"
 #include "app/gui/plots/plot_panel.h"
 #include "app/gui/trace_model.h"
 #include "app/gui/view/scene_view.h"
@@ -146,6 +147,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(&session_, &Session::stepRecorded, this, &MainWindow::onStepRecorded);
     connect(&session_, &Session::rewound, this, [this](long stepIndex) {
         plotPanel_->truncate(static_cast<int>(stepIndex) + 1);   // sample 0 is t = 0
+        bodyPlotPanel_->truncate(static_cast<int>(stepIndex) + 1);
         derivationDirty_ = true;
         traceDirty_ = true;
     });
@@ -511,6 +513,15 @@ void MainWindow::createDocks()
     plotDock->setWidget(plotPanel_);
     addDockWidget(Qt::BottomDockWidgetArea, plotDock);
 
+    bodyPlotPanel_ = new BodyPlotPanel;
+    bodyPlotPanel_->setObjectName("bodyPlotPanel");
+    auto* bodyPlotDock = new QDockWidget(tr("Per body"), this);
+    bodyPlotDock->setObjectName("bodyPlotDock");
+    bodyPlotDock->setWidget(bodyPlotPanel_);
+    addDockWidget(Qt::BottomDockWidgetArea, bodyPlotDock);
+    tabifyDockWidget(plotDock, bodyPlotDock);
+    plotDock->raise();
+
     accuracyPanel_ = new AccuracyPanel;
     accuracyPanel_->setObjectName("accuracyPanel");
     auto* accuracyDock = new QDockWidget(tr("Accuracy"), this);
@@ -604,9 +615,13 @@ void MainWindow::onSessionReset()
 {
     traceModel_->clear();
     plotPanel_->clear();
+    QStringList names;
+    for (const BodyDef& b : session_.world()->scene().bodies) names << QString::fromStdString(b.name);
+    bodyPlotPanel_->setBodies(names);
     sceneView_->clearTrails();
     // Sample 0: the initial state's diagnostics, computed by the physics.
     plotPanel_->appendStep(session_.world()->time(), session_.world()->diagnostics());
+    bodyPlotPanel_->appendStep(session_.world()->time(), session_.world()->diagnostics());
     derivationDirty_ = true;
     traceDirty_ = true;
 }
@@ -614,6 +629,7 @@ void MainWindow::onSessionReset()
 void MainWindow::onStepRecorded(const StepTrace& trace)
 {
     plotPanel_->appendStep(trace.time, trace.diagnostics);
+    bodyPlotPanel_->appendStep(trace.time, trace.diagnostics);
     derivationDirty_ = true;
     traceDirty_ = true;
 }

@@ -26,6 +26,7 @@ class QTreeView;
 namespace rbw {
 
 class AccuracyPanel;
+class BodyPlotPanel;
 class DerivationView;
 class PlotPanel;
 class SceneView;
@@ -48,6 +49,7 @@ public:
     DerivationView* derivationView() const { return derivationView_; }
     PlotPanel* plotPanel() const { return plotPanel_; }
     AccuracyPanel* accuracyPanel() const { return accuracyPanel_; }
+    BodyPlotPanel* bodyPlotPanel() const { return bodyPlotPanel_; }
     // The HTML last handed to the derivation view (tests, export).
     QString derivationHtml() const { return derivationHtml_; }
     // Every action that has a keyboard shortcut, in menu order (the Help → Keys table).
@@ -100,6 +102,7 @@ private:
     DerivationView* derivationView_ = nullptr;
     PlotPanel* plotPanel_ = nullptr;
     AccuracyPanel* accuracyPanel_ = nullptr;
+    BodyPlotPanel* bodyPlotPanel_ = nullptr;
     QLabel* statusLabel_ = nullptr;
     QLabel* alertLabel_ = nullptr;
     QDockWidget* derivationDock_ = nullptr;
