@@ -21,6 +21,22 @@ struct Case {
     long steps;
 };
 
+// The cases of docs/stability.md, one table for the test that asserts the outcomes
+// and for the program that measured them, so the two cannot drift apart.
+inline const Case kCases[] = {
+    {"mass 1e-6", Vec3(1, 0.6, 0.5), 1e-6, Vec3(0.3, 1.0, 0.2), 0.01, 10000},
+    {"mass 1", Vec3(1, 0.6, 0.5), 1.0, Vec3(0.3, 1.0, 0.2), 0.01, 10000},
+    {"mass 1e6", Vec3(1, 0.6, 0.5), 1e6, Vec3(0.3, 1.0, 0.2), 0.01, 10000},
+    {"needle 1000:1", Vec3(1, 1e-3, 1e-3), 1.0, Vec3(0.3, 1.0, 0.2), 0.01, 10000},
+    {"plate 1000:1", Vec3(1, 1, 1e-3), 1.0, Vec3(0.3, 1.0, 0.2), 0.01, 10000},
+    {"omega 1e3, h 1e-3", Vec3(1, 0.6, 0.5), 1.0, Vec3(300, 1000, 200), 1e-3, 10000},
+    {"omega 1e3, h 1e-5", Vec3(1, 0.6, 0.5), 1.0, Vec3(300, 1000, 200), 1e-5, 10000},
+    {"dt 1e-6", Vec3(1, 0.6, 0.5), 1.0, Vec3(0.3, 1.0, 0.2), 1e-6, 10000},
+    {"dt 0.1", Vec3(1, 0.6, 0.5), 1.0, Vec3(0.3, 1.0, 0.2), 0.1, 10000},
+    {"dt 1", Vec3(1, 0.6, 0.5), 1.0, Vec3(0.3, 1.0, 0.2), 1.0, 10000},
+    {"1e6 steps", Vec3(1, 0.6, 0.5), 1.0, Vec3(0.3, 1.0, 0.2), 0.01, 1000000},
+};
+
 // The body starts turned by 0.7 rad about (1, 2, 2) so that no principal axis is along
 // a world axis, at rest, with omega0; no forces, no gravity, nothing to collide.
 inline SceneDef freeBodyScene(const Case& c, const std::string& integrator)
