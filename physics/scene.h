@@ -8,6 +8,11 @@
 //   forces    external forces f at world points p, acting in steps k with
 //             fromStep <= k < toStep (steps counted from 0)
 //   probes    points fixed to a body, given in world coordinates at t = 0
+//
+// Bodies are referred to by index. A scene file refers to them by name; the loader
+// resolves the name and also keeps it (bodyName, PairOverride::nameA/nameB), so that
+// validate() can say which name it was when it names no body (index -1). A scene
+// built in code leaves the names empty.
 #pragma once
 
 #include "physics/body.h"
@@ -15,6 +20,7 @@
 #include "physics/inertia.h"
 #include "physics/math_types.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +32,7 @@ struct ForceDef {
     Vec3 f_W = Vec3::Zero();         // force, world frame
     long fromStep = 0;
     long toStep = 1;                 // exclusive
+    std::string bodyName = {};       // the name a scene file gave, or empty (see above)
 
     bool activeIn(long k) const { return fromStep <= k && k < toStep; }
 };
@@ -42,6 +49,7 @@ struct TorqueDef {
     long toStep = 1;                 // exclusive
     bool switchable = false;
     bool enabledAtStart = true;
+    std::string bodyName = {};       // the name a scene file gave, or empty
 
     bool activeIn(long k) const { return fromStep <= k && k < toStep; }
 };
@@ -49,14 +57,16 @@ struct TorqueDef {
 // The keyboard push of an interactive lesson: a force of the given magnitude along a
 // world axis, applied for one step at a point fixed to the body.
 struct PushDef {
-    int body = -1;                   // -1: the scene has no keyboard pushes
+    int body = -1;                   // -1 (and no bodyName): the scene has no keyboard pushes
     Vec3 p_B = Vec3::Zero();         // point of application, body frame
     double magnitude = 1.0;          // [N]
+    std::string bodyName = {};       // the name a scene file gave, or empty
 };
 
 struct ProbeDef {
     int body = -1;
     Vec3 p0_W = Vec3::Zero();        // world position at t = 0; moves with its body
+    std::string bodyName = {};       // the name a scene file gave, or empty
 };
 
 // How the corners of a box below a plane are resolved: one impulse per corner, in
@@ -64,13 +74,17 @@ struct ProbeDef {
 enum class PlaneContactMode { PerPoint, Average };
 
 // Per-pair overrides of the scene-wide restitution and friction. B is a body, or a
-// plane when planeB >= 0.
+// plane when planeB >= 0. A pair overrides at least one of the two, names two
+// different bodies (or a body and a plane) and is listed once (validate()).
 struct PairOverride {
     int bodyA = -1;
     int bodyB = -1;
     int planeB = -1;
-    double restitution = -1.0;   // < 0: not overridden
-    double friction = -1.0;      // < 0: not overridden
+    std::optional<double> restitution = std::nullopt;   // none: the scene's
+    std::optional<double> friction = std::nullopt;      // none: the scene's
+    // The names a scene file gave, [body, body or plane], or empty (see above).
+    std::string nameA = {};
+    std::string nameB = {};
 };
 
 struct SceneDef {
@@ -131,9 +145,16 @@ struct SceneIssue {
     std::string reason;
 };
 
-// Physical validity of a definition: masses and sizes > 0, finite numbers, dt > 0,
-// a known integrator, force and probe bodies that exist, unique body names.
-// Front ends check the file's structure; this checks what the physics requires.
+// Every rule a definition must obey, whoever built it: finite numbers, dt > 0,
+// masses and sizes > 0, known integrators and conventions (scene and per body),
+// unique non-empty names of bodies and planes, fixed bodies at rest and without
+// forces, torques or pushes, forces, torques, pushes and probes on bodies that exist,
+// coefficient ranges, energy-jump settings, unit plane normals, pairs that name two
+// different bodies (or a body and a plane), override something and are listed once.
+// All problems are returned at once, each with the path of the field in the scene
+// file's terms ("bodies[0].mass", "pairs[2].bodies") and the reason. The scene
+// loader only checks the file's structure (JSON, keys, types) and leaves every rule
+// here, so a scene built in code and one read from a file get the same messages.
 std::vector<SceneIssue> validate(const SceneDef& scene);
 
 } // namespace rbw

@@ -241,10 +241,8 @@ BodyDef toBody(const QJsonValue& v, const QString& path)
     b.angularResponse = o.contains("angular_response")
                             ? toBool(o.value("angular_response"), join(path, "angular_response"))
                             : true;
-    if (b.fixed && (b.v0_W != Vec3::Zero() || b.omega0_W != Vec3::Zero())) {
-        throw FieldError{path, QStringLiteral("a fixed body cannot have a velocity")};
-    }
     // Per-body variants of the scene's integrator and convention (compared side by side).
+    // An empty string is BodyDef's "the scene's integrator", so the file may not write it.
     if (o.contains("integrator")) {
         b.integrator = toString(o.value("integrator"), join(path, "integrator")).toStdString();
         if (b.integrator.empty()) {
@@ -257,17 +255,12 @@ BodyDef toBody(const QJsonValue& v, const QString& path)
     return b;
 }
 
-int bodyByName(const SceneDef& scene, const QJsonObject& o, const QString& path)
+// The body an object's "body" key names: its index, -1 if no body has the name. The
+// name is kept too, so that validate() can report it.
+int bodyByName(const SceneDef& scene, const QJsonObject& o, const QString& path, std::string& name)
 {
-    const QString name = toString(require(o, path, "body"), join(path, "body"));
-    const int index = scene.bodyIndex(name.toStdString());
-    if (index < 0) {
-        QStringList names;
-        for (const BodyDef& b : scene.bodies) names << QString::fromStdString(b.name);
-        throw FieldError{join(path, "body"), QStringLiteral("no body named \"%1\" (bodies: %2)")
-                                                 .arg(name, names.join(QStringLiteral(", ")))};
-    }
-    return index;
+    name = toString(require(o, path, "body"), join(path, "body")).toStdString();
+    return scene.bodyIndex(name);
 }
 
 ForceDef toForce(const SceneDef& scene, const QJsonValue& v, const QString& path)
@@ -275,7 +268,7 @@ ForceDef toForce(const SceneDef& scene, const QJsonValue& v, const QString& path
     const QJsonObject o = toObject(v, path);
     checkKeys(o, path, {"body", "point", "force", "from_step", "to_step"});
     ForceDef f;
-    f.body = bodyByName(scene, o, path);
+    f.body = bodyByName(scene, o, path, f.bodyName);
     f.p_W = toVec3(require(o, path, "point"), join(path, "point"));
     f.f_W = toVec3(require(o, path, "force"), join(path, "force"));
     // Lifetime: steps k with from_step <= k < to_step. Neither key: step 0 only.
@@ -290,7 +283,7 @@ TorqueDef toTorque(const SceneDef& scene, const QJsonValue& v, const QString& pa
     const QJsonObject o = toObject(v, path);
     checkKeys(o, path, {"body", "torque", "from_step", "to_step", "switchable", "enabled"});
     TorqueDef t;
-    t.body = bodyByName(scene, o, path);
+    t.body = bodyByName(scene, o, path, t.bodyName);
     t.q_W = toVec3(require(o, path, "torque"), join(path, "torque"));
     // Lifetime as for forces, except that a torque with neither key lasts for ever:
     // a couple is usually a motor, not a kick.
@@ -307,7 +300,7 @@ PushDef toPush(const SceneDef& scene, const QJsonValue& v, const QString& path)
     const QJsonObject o = toObject(v, path);
     checkKeys(o, path, {"body", "point", "force"});
     PushDef p;
-    p.body = bodyByName(scene, o, path);
+    p.body = bodyByName(scene, o, path, p.bodyName);
     p.p_B = o.contains("point") ? toVec3(o.value("point"), join(path, "point")) : Vec3::Zero();
     p.magnitude = o.contains("force") ? toNumber(o.value("force"), join(path, "force")) : 1.0;
     return p;
@@ -318,7 +311,7 @@ ProbeDef toProbe(const SceneDef& scene, const QJsonValue& v, const QString& path
     const QJsonObject o = toObject(v, path);
     checkKeys(o, path, {"body", "point"});
     ProbeDef p;
-    p.body = bodyByName(scene, o, path);
+    p.body = bodyByName(scene, o, path, p.bodyName);
     p.p0_W = toVec3(require(o, path, "point"), join(path, "point"));
     return p;
 }
@@ -330,22 +323,11 @@ PlaneDef toPlane(const QJsonValue& v, const QString& path)
     PlaneDef p;
     p.name = toString(require(o, path, "name"), join(path, "name")).toStdString();
     p.point_W = toVec3(require(o, path, "point"), join(path, "point"));
+    // A file's normal may have any length: it is normalised here. The zero vector has
+    // no direction and stays zero, for validate() to report.
     const Vec3 n = toVec3(require(o, path, "normal"), join(path, "normal"));
-    if (n.norm() == 0.0) {
-        throw FieldError{join(path, "normal"), QStringLiteral("must not be the zero vector")};
-    }
-    p.n_W = n.normalized();
+    p.n_W = n == Vec3::Zero() ? n : n.normalized();
     return p;
-}
-
-double coefficient(const QJsonValue& v, const QString& path, bool atMostOne)
-{
-    const double x = toNumber(v, path);
-    if (x < 0.0 || (atMostOne && x > 1.0)) {
-        throw FieldError{path, atMostOne ? QStringLiteral("must be a number from 0 to 1, got %1").arg(x)
-                                         : QStringLiteral("must be >= 0, got %1").arg(x)};
-    }
-    return x;
 }
 
 PairOverride toPair(const SceneDef& scene, const QJsonValue& v, const QString& path)
@@ -357,34 +339,16 @@ PairOverride toPair(const SceneDef& scene, const QJsonValue& v, const QString& p
     if (names.size() != 2) {
         throw FieldError{bp, QStringLiteral("must name exactly two: [\"bodyA\", \"bodyB or plane\"]")};
     }
+    // Names are resolved to indices (-1: none) and kept; validate() checks that they
+    // exist, differ and are not listed twice.
     PairOverride pair;
-    const QString first = toString(names[0], bp + "[0]");
-    const QString second = toString(names[1], bp + "[1]");
-    pair.bodyA = scene.bodyIndex(first.toStdString());
-    if (pair.bodyA < 0) {
-        throw FieldError{bp + "[0]", QStringLiteral("no body named \"%1\"").arg(first)};
-    }
-    pair.bodyB = scene.bodyIndex(second.toStdString());
-    pair.planeB = pair.bodyB < 0 ? scene.planeIndex(second.toStdString()) : -1;
-    if (pair.bodyB < 0 && pair.planeB < 0) {
-        throw FieldError{bp + "[1]", QStringLiteral("no body or plane named \"%1\"").arg(second)};
-    }
-    if (pair.planeB < 0 && pair.bodyB == pair.bodyA) {
-        throw FieldError{bp, QStringLiteral("names \"%1\" twice; a pair needs two different bodies").arg(first)};
-    }
-    for (const PairOverride& other : scene.pairs) {
-        const bool same = pair.planeB >= 0 ? (other.planeB == pair.planeB && other.bodyA == pair.bodyA)
-                                           : (other.planeB < 0 && ((other.bodyA == pair.bodyA && other.bodyB == pair.bodyB) ||
-                                                                   (other.bodyA == pair.bodyB && other.bodyB == pair.bodyA)));
-        if (same) {
-            throw FieldError{bp, QStringLiteral("this pair is already listed; give each pair once")};
-        }
-    }
-    if (!o.contains("restitution") && !o.contains("friction")) {
-        throw FieldError{path, QStringLiteral("give \"restitution\", \"friction\" or both")};
-    }
-    if (o.contains("restitution")) pair.restitution = coefficient(o.value("restitution"), join(path, "restitution"), true);
-    if (o.contains("friction")) pair.friction = coefficient(o.value("friction"), join(path, "friction"), false);
+    pair.nameA = toString(names[0], bp + "[0]").toStdString();
+    pair.nameB = toString(names[1], bp + "[1]").toStdString();
+    pair.bodyA = scene.bodyIndex(pair.nameA);
+    pair.bodyB = scene.bodyIndex(pair.nameB);
+    pair.planeB = pair.bodyB < 0 ? scene.planeIndex(pair.nameB) : -1;
+    if (o.contains("restitution")) pair.restitution = toNumber(o.value("restitution"), join(path, "restitution"));
+    if (o.contains("friction")) pair.friction = toNumber(o.value("friction"), join(path, "friction"));
     return pair;
 }
 
@@ -408,16 +372,18 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
     }
     s.g_W = vec3Or(o, QString(), "gravity", Vec3::Zero());
 
+    // Bodies and planes come first, so that forces, probes and pairs can name them
+    // wherever they appear in the file. A name is resolved to the first body (or
+    // plane) that has it; validate() reports a name used twice.
     const QJsonArray bodies = toArray(require(o, QString(), "bodies"), "bodies");
     for (int i = 0; i < bodies.size(); ++i) {
-        const QString at = QStringLiteral("bodies[%1]").arg(i);
-        BodyDef body = toBody(bodies[i], at);
-        // Checked here, before forces and probes look bodies up by name.
-        if (s.bodyIndex(body.name) >= 0) {
-            throw FieldError{at + ".name", QStringLiteral("duplicate body name \"%1\"")
-                                               .arg(QString::fromStdString(body.name))};
+        s.bodies.push_back(toBody(bodies[i], QStringLiteral("bodies[%1]").arg(i)));
+    }
+    if (o.contains("planes")) {
+        const QJsonArray planes = toArray(o.value("planes"), "planes");
+        for (int i = 0; i < planes.size(); ++i) {
+            s.planes.push_back(toPlane(planes[i], QStringLiteral("planes[%1]").arg(i)));
         }
-        s.bodies.push_back(std::move(body));
     }
     if (o.contains("forces")) {
         const QJsonArray forces = toArray(o.value("forces"), "forces");
@@ -440,23 +406,11 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
             s.probes.push_back(toProbe(s, probes[i], QStringLiteral("probes[%1]").arg(i)));
         }
     }
-    if (o.contains("planes")) {
-        const QJsonArray planes = toArray(o.value("planes"), "planes");
-        for (int i = 0; i < planes.size(); ++i) {
-            const QString at = QStringLiteral("planes[%1]").arg(i);
-            PlaneDef plane = toPlane(planes[i], at);
-            if (s.planeIndex(plane.name) >= 0 || s.bodyIndex(plane.name) >= 0) {
-                throw FieldError{at + ".name", QStringLiteral("duplicate name \"%1\" (bodies and planes share names)")
-                                                   .arg(QString::fromStdString(plane.name))};
-            }
-            s.planes.push_back(std::move(plane));
-        }
-    }
     if (o.contains("box_collisions")) s.boxCollisions = toBool(o.value("box_collisions"), "box_collisions");
-    if (o.contains("restitution")) s.restitution = coefficient(o.value("restitution"), "restitution", true);
-    if (o.contains("friction")) s.friction = coefficient(o.value("friction"), "friction", false);
+    if (o.contains("restitution")) s.restitution = toNumber(o.value("restitution"), "restitution");
+    if (o.contains("friction")) s.friction = toNumber(o.value("friction"), "friction");
     if (o.contains("restitution_threshold")) {
-        s.restitutionThreshold = coefficient(o.value("restitution_threshold"), "restitution_threshold", false);
+        s.restitutionThreshold = toNumber(o.value("restitution_threshold"), "restitution_threshold");
     }
     if (o.contains("pairs")) {
         const QJsonArray pairs = toArray(o.value("pairs"), "pairs");
@@ -471,16 +425,8 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
         // { "factor": 2, "floor": 1e-9 }: the energy-jump blow-up bound (docs/stability.md)
         const QJsonObject e = toObject(o.value("energy_jump"), "energy_jump");
         checkKeys(e, "energy_jump", {"factor", "floor"});
-        if (e.contains("factor")) {
-            s.energyJumpFactor = toNumber(e.value("factor"), "energy_jump.factor");
-            if (s.energyJumpFactor != 0.0 && s.energyJumpFactor < 1.0) {
-                throw FieldError{"energy_jump.factor",
-                                 QStringLiteral("must be 0 (off) or a number >= 1, got %1").arg(s.energyJumpFactor)};
-            }
-        }
-        if (e.contains("floor")) {
-            s.energyJumpFloor = coefficient(e.value("floor"), "energy_jump.floor", false);
-        }
+        if (e.contains("factor")) s.energyJumpFactor = toNumber(e.value("factor"), "energy_jump.factor");
+        if (e.contains("floor")) s.energyJumpFloor = toNumber(e.value("floor"), "energy_jump.floor");
     }
     if (o.contains("plane_contacts")) {
         const QString mode = toString(o.value("plane_contacts"), "plane_contacts");
@@ -555,6 +501,8 @@ SceneLoadResult parseScene(const QByteArray& json, const QString& fileLabel)
         return result;
     }
     try {
+        // Structure first (stops at the first problem), then every rule of the physics
+        // (all problems at once), the same validate() a scene built in code goes through.
         SceneDef scene = toScene(doc.object(), fileLabel);
         for (const SceneIssue& issue : validate(scene)) {
             result.errors << QStringLiteral("%1: %2: %3")
