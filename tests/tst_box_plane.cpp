@@ -1,5 +1,5 @@
 // Box-plane contacts (physics/collision/box_plane.h, Napier practical 6 and the
-// rigid-body assessment, reference.md section 4): a unit cube landing on the ground
+// rigid-body assessment, docs/references.md §4): a unit cube landing on the ground
 // on a vertex, an edge and a face (1, 2, 4 contacts), touching, above, a wall and a
 // tilted plane; and the averaged contact point.
 //

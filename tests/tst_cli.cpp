@@ -1,5 +1,5 @@
 // rbw end to end: run it on lesson 1 and parse what it prints, the same way a grader
-// script would. Expected numbers are Table 2.1's (reference.md section 1), derived by
+// script would. Expected numbers are Table 2.1's (docs/references.md §1), derived by
 // hand in tst_table21.cpp; here they check that the JSON carries them unchanged.
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -94,7 +94,7 @@ void TestCli::lesson1TraceFields()
     QCOMPARE(step.value("step").toInt(), 0);
     QCOMPARE(step.value("time").toDouble(), 2.0);
 
-    // The intermediates of reference.md section 1, each with all its fields.
+    // The intermediates of docs/references.md §1, each with all its fields.
     for (const char* id : {"force", "torque", "position", "linear_velocity", "orientation", "angular_momentum",
                            "inertia_body", "inverse_inertia_world", "angular_velocity"}) {
         const QJsonObject q = quantity(step, id);

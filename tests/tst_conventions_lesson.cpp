@@ -1,5 +1,5 @@
 // Lesson 08-conventions: the same box under the standard world inverse inertia
-// I^-1 = R I0^-1 R^T and the TUM course template's R^T I0^-1 R (reference.md section 1),
+// I^-1 = R I0^-1 R^T and the TUM course template's R^T I0^-1 R (docs/references.md §1),
 // side by side in one scene through the per-body key bodies[i].inertia_convention.
 //
 // The box is Table 2.1's: size (a, b, c) = (1, 0.6, 0.5), M = 2, so

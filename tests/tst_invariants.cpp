@@ -1,4 +1,4 @@
-// Multi-step invariants of the explicit Euler world (reference.md sections 1 and 5),
+// Multi-step invariants of the explicit Euler world (docs/references.md §1 and §5),
 // each derived in a comment above its test, with the tolerance stated and justified.
 //
 // Notation: u = 2^-53 is the unit roundoff of double (half the machine epsilon).

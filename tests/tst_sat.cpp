@@ -1,5 +1,5 @@
 // The box-box separating axis test (physics/collision/box_box_sat.h) against the
-// course's reference case (reference.md section 2), the TUM template's own
+// course's reference case (docs/references.md §2), the TUM template's own
 // testCheckCollision cases, and hand-built cases in which each class of axis wins.
 //
 // Notation. c = s = cos 45 = sin 45 = 1/sqrt 2. A box is (centre, rotation, half
@@ -119,7 +119,7 @@ double independentOverlap(const BoxPose& A, const BoxPose& B, int k)
 
 // --- The configurations, shared by several tests ---------------------------------
 
-// Reference case (reference.md 2): unit cubes, A at the origin, B at (0.9, 0.2, 0.1).
+// Reference case (docs/references.md §2): unit cubes, A at the origin, B at (0.9, 0.2, 0.1).
 BoxPose refA() { return unitCube(Vec3::Zero()); }
 BoxPose refB() { return unitCube(Vec3(0.9, 0.2, 0.1)); }
 
@@ -291,10 +291,11 @@ void TestSat::collision_data()
         << slabA() << vertexB(0.05) << 1 << VF << 0.05 << Vec3(0, -1, 0) << Vec3(0, 0.45, 0) << 1e-12;
 
     // The vertex-face point is picked along toCenter, not along the face normal, so
-    // it need not be the deepest corner (reference.md's "the corner of B deepest
-    // towards A" is only approximately the rule). A: the slab. B: a unit cube turned
-    // -10 deg about z, R(x, y) = (x co + y si, -x si + y co), co = cos 10, si = sin
-    // 10, at c_B = (1.5, y_B, 0). B's bottom corners in the xy-plane, relative to c_B:
+    // it need not be the deepest corner (the usual wording "the corner of B deepest
+    // towards A" is only approximately the rule; docs/references.md §2). A: the
+    // slab. B: a unit cube turned -10 deg about z, R(x, y) = (x co + y si, -x si +
+    // y co), co = cos 10, si = sin 10, at c_B = (1.5, y_B, 0). B's bottom corners in
+    // the xy-plane, relative to c_B:
     //   (-,-): (-(co + si)/2, (si - co)/2) = (-0.5792, -0.4056)
     //   (+,-): ((co - si)/2, -(co + si)/2) = ( 0.4056, -0.5792)   <- the lowest
     // With y_B = 0.5 + (co + si)/2 - 0.05 the (+,-) corners are 0.05 inside A, the

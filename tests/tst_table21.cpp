@@ -1,4 +1,4 @@
-// Table 2.1 of the TUM exercise (reference.md section 1): one explicit Euler step of
+// Table 2.1 of the TUM exercise (docs/references.md §1): one explicit Euler step of
 // h = 2 for a box of size (1, 0.6, 0.5), mass 2, rotated 90 degrees about z, pushed by
 // f = (1, 1, 0) at p = (0.3, 0.5, 0.25). Every intermediate quantity of the trace is
 // checked against a value derived by hand below, written as an exact fraction.

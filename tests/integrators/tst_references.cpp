@@ -154,7 +154,7 @@ void TestReferences::projectile()
 }
 
 // ---------------------------------------------------------------------------------
-// Symmetric top, the worked case of reference.md: I = (3, 3, 9), L_B(0) = (0, 5, 7).
+// Symmetric top, the worked case of docs/references.md §5: I = (3, 3, 9), L_B(0) = (0, 5, 7).
 // Omega = L3 (I1 - I3)/(I1 I3) = 7 (3 - 9)/27 = -42/27 = -14/9. L_perp = 5, phi0 = 0, so
 // L_B(t) = (5 sin(-14t/9), 5 cos(-14t/9), 7); at t = 9 pi/28 (a quarter turn of L_B):
 // L_B = (5 sin(-pi/2), 5 cos(-pi/2), 7) = (-5, 0, 7). Precession rate |L|/I1 = sqrt(74)/3.

@@ -96,7 +96,7 @@ void TestViewGeometry::lesson1ForceArrowIsTheTracesForce()
     QVERIFY(near(f.origin_W, Vec3(0.3, 0.5, 0.25), 0.0));
 
     // The probes come from the trace: v_p of (-0.3, -0.5, -0.25) = (-1.111861, 0.929412, 2.675410)
-    // (reference.md section 1, Table 2.1).
+    // (docs/references.md §1, Table 2.1).
     QCOMPARE(int(s.probes.size()), 2);
     QVERIFY(near(s.probes[0].p_W, Vec3(-0.3, -0.5, -0.25), 1e-12));
     QVERIFY2(near(s.probes[0].v_W, Vec3(-1.111861, 0.929412, 2.675410), 1e-6), qPrintable(text(s.probes[0].v_W)));
