@@ -15,9 +15,12 @@
 #include "physics/math_types.h"
 
 #include <optional>
+#include <source_location>
 #include <string>
 
 namespace rbw {
+
+struct StepTrace;
 
 struct BodyDef {
     std::string name;
@@ -45,6 +48,9 @@ struct MassProperties {
     double invM = 0.0;                // 1/M, 0 for a fixed body
     Mat3 I0_B = Mat3::Zero();         // body inertia, zero for a fixed body
     Mat3 I0inv_B = Mat3::Zero();      // its inverse, zero for a fixed body
+    // The statements that computed I0 and I0^-1 (their trace rows point there).
+    std::source_location I0_where;
+    std::source_location I0inv_where;
 };
 
 MassProperties massProperties(const BodyDef& def);
@@ -65,7 +71,16 @@ struct BodyState {
 BodyState initialState(const BodyDef& def, const MassProperties& mp, InertiaConvention convention);
 
 // R = R(r), Iinv_W from R and I0^-1, omega_W = Iinv_W L_W  (TUM algorithm steps 6 and 7).
-void updateDerived(const MassProperties& mp, BodyState& state, InertiaConvention convention);
+// With a trace, records the rows every integrator shares for body `body`: I0, I0^-1, R,
+// I^-1 (with the convention's formula) and omega.
+void updateDerived(const MassProperties& mp, BodyState& state, InertiaConvention convention,
+                   StepTrace* trace = nullptr, int body = -1);
+
+// The same when the rotation matrix R_WB is itself the state (the rotation-matrix
+// integrators, Napier practical 6): Iinv_W from this R, omega_W = Iinv_W L_W, and the
+// rows I0, I0^-1, I^-1 and omega (R's row is the integrator's own).
+void updateDerivedFromMatrix(const MassProperties& mp, BodyState& state, InertiaConvention convention,
+                             StepTrace* trace, int body);
 
 // P = M v (zero for a fixed body).
 inline Vec3 linearMomentum(const MassProperties& mp, const BodyState& s) { return mp.M * s.v_W; }

@@ -21,7 +21,7 @@ Mat3 inverseInertiaWorld(const Mat3& R_WB, const Mat3& I0inv_B, InertiaConventio
 {
     assert(I0inv_B.isDiagonal() && "body inertia must be given in its principal frame");
     if (convention == InertiaConvention::CourseTemplate) {
-        // Iinv_W = R^T I0^-1 R  (TUM template reference solution, reference.md section 1)
+        // Iinv_W = R^T I0^-1 R  (TUM template reference solution, docs/references.md §1)
         return R_WB.transpose() * I0inv_B.diagonal().asDiagonal() * R_WB;
     }
     // Iinv_W = R I0^-1 R^T  (TUM slides "Simulation Algorithm 3D", step 6).

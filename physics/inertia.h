@@ -16,7 +16,7 @@ namespace rbw {
 // How the world inverse inertia is assembled from R and I0^-1.
 //   Standard:       Iinv_W = R I0^-1 R^T (physically correct; TUM slides, Napier practical 7).
 //   CourseTemplate: Iinv_W = R^T I0^-1 R (what the TUM template's reference solution
-//                   effectively computes; reference.md section 1).
+//                   effectively computes; docs/references.md §1).
 enum class InertiaConvention { Standard, CourseTemplate };
 
 // I0 = M/12 * diag(b^2 + c^2, a^2 + c^2, a^2 + b^2)

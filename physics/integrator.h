@@ -44,14 +44,44 @@ struct IntegrationInput {
     }
 };
 
+// One body's step, as the base hands it to an integrator's update.
+struct BodyStep {
+    int body;                       // index in the world, for the trace rows
+    double h;                       // step size [s]
+    const MassProperties& mp;       // M, 1/M, I0, I0^-1
+    const BodyLoad& load;           // F and q of this step
+    InertiaConvention convention;   // I^-1 = R I0^-1 R^T or R^T I0^-1 R
+    StepTrace* trace;               // nullptr: record nothing
+
+    // Records a row of this body, on the line that computes the value.
+    template <class T>
+    void record(const QuantityInfo& info, const T& value, int index = -1,
+                std::source_location where = std::source_location::current()) const
+    {
+        rbw::record(trace, info, body, value, index, where);
+    }
+};
+
+// The base owns what every integrator shares: the loop over the bodies of its group,
+// then the derived quantities (R = R(r), I^-1, omega = I^-1 L) and their trace rows
+// (updateDerived in body.cpp). An integrator implements only its update of x, v, r
+// and L for one body, and records its own rows, so each file reads like its formula.
 class Integrator {
 public:
     virtual ~Integrator() = default;
     virtual const char* name() const = 0;
-    // Advances the state of every body b with in.advances(b). Must leave R_WB, Iinv_W and
-    // omega_W consistent with the new state (updateDerived).
-    virtual void integrate(const IntegrationInput& in, std::vector<BodyState>& states,
-                           StepTrace* trace) const = 0;
+    // Advances the state of every body b with in.advances(b) and leaves R_WB, Iinv_W and
+    // omega_W consistent with the new state.
+    void integrate(const IntegrationInput& in, std::vector<BodyState>& states, StepTrace* trace) const;
+
+protected:
+    // What the base derives after advance(): from the orientation quaternion r (R, I^-1
+    // and omega), or from the rotation matrix R that advance() left as the state (I^-1
+    // and omega only: the rotation-matrix integrators).
+    enum class Derived { FromQuaternion, FromMatrix };
+    virtual Derived derivedFrom() const { return Derived::FromQuaternion; }
+    // One body's update of x, v, r (or R) and L, with its own trace rows.
+    virtual void advance(const BodyStep& step, BodyState& s) const = 0;
 };
 
 } // namespace rbw

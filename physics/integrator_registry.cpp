@@ -15,7 +15,7 @@ const std::vector<IntegratorInfo>& integratorCatalogue()
 {
     static const std::vector<IntegratorInfo> catalogue = {
         {ExplicitEuler::kName,
-         "explicit Euler in the TUM algorithm's order, first order (reference.md section 1)", 1},
+         "explicit Euler in the TUM algorithm's order, first order (docs/references.md §1)", 1},
         {SymplecticEuler::kName,
          "symplectic Euler: v and L first, then x and r with the new v and omega, first order (Box2D, Bullet)", 1},
         {Midpoint::kName, "explicit midpoint rule (RK2) on (x, r, P, L), second order (Runge 1895)", 2},

@@ -101,7 +101,7 @@ struct SceneDef {
     std::vector<ProbeDef> probes;
     PushDef push;
 
-    // Collisions (reference.md sections 2-4).
+    // Collisions (docs/references.md §2–§4).
     std::vector<PlaneDef> planes;          // fixed planes: ground and walls
     bool boxCollisions = true;             // box-box contacts between the bodies
     double restitution = 1.0;              // c, scene-wide

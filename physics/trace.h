@@ -2,16 +2,20 @@
 // computed. It is the one source of truth for every view: the app's panels and
 // derivations, the CLI's JSON and CSV, the plots and the exports all read it.
 //
-// An entry points at a static QuantityInfo (id, symbol, formula, frame, unit, stage;
-// see quantities.h) and carries the body, an optional index (which force, which
-// probe, which contact) and the value. Recording therefore costs a push_back of a
-// small struct and never allocates a string; with the trace switched off (a null
-// StepTrace*) nothing is recorded at all.
+// An entry points at a static QuantityInfo (id, symbol, formula, frame, unit, stage,
+// index kind; see quantity_catalogue.h) and carries the body, an optional index
+// (which force, which probe, which contact), the value and the source location of
+// the physics statement that computed it (a std::source_location captured by the
+// record call, which sits on the line that computes the value). Recording therefore
+// costs a push_back of a small struct and never allocates a string; with the trace
+// switched off (a null StepTrace*) nothing is recorded at all.
 #pragma once
 
 #include "physics/diagnostics.h"
 #include "physics/math_types.h"
 
+#include <source_location>
+#include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
@@ -25,9 +29,16 @@ enum class Frame { None, World, Body };
 const char* stageName(Stage s);   // "forces", "integration", ...
 const char* frameName(Frame f);   // "", "world", "body"
 
+// What an entry's index counts: which applied force f_i, which couple q_j, which
+// probe, which contact, which RK stage k_i, which correction; None: no index (-1).
+enum class IndexKind { None, Force, Torque, Probe, Contact, RkStage, Correction };
+const char* indexKindName(IndexKind k);   // "", "force", "torque", "probe", ...
+
 struct QuantityInfo {
-    const char* id;        // stable identifier, e.g. "angular_velocity"
+    const char* key;       // unique in the catalogue: the C++ handle's name, e.g. "rk4_position"
+    const char* id;        // the trace id, shared by a quantity's variants, e.g. "position"
     Stage stage;
+    IndexKind indexKind;
     const char* symbol;    // LaTeX, e.g. "\\boldsymbol{\\omega}"
     const char* text;      // plain UTF-8 symbol for tables, e.g. "ω"
     const char* formula;   // LaTeX, e.g. "\\boldsymbol{\\omega} = I^{-1}\\mathbf{L}"
@@ -43,7 +54,14 @@ struct TraceEntry {
     int body;     // index into the world's bodies, -1 for a world-level quantity
     int index;    // which force / probe / contact, -1 when there is only one
     TraceValue value;
+    std::source_location where;   // the physics statement that computed the value
 };
+
+// Where an entry was computed: the file relative to the repository root (e.g.
+// "physics/integrators/explicit_euler.cpp") and the line; sourceText gives "file:line".
+std::string_view sourceFile(const TraceEntry& e);
+unsigned sourceLine(const TraceEntry& e);
+std::string sourceText(const TraceEntry& e);
 
 // What a contact is, beside its numbers (which are entries of Stage::Collision whose
 // index is the contact's number).
@@ -73,22 +91,25 @@ struct StepTrace {
         diagnostics = Diagnostics{};
     }
 
-    void add(const QuantityInfo& info, int body, const TraceValue& value, int index = -1)
+    void add(const QuantityInfo& info, int body, const TraceValue& value, int index = -1,
+             std::source_location where = std::source_location::current())
     {
-        entries.push_back(TraceEntry{&info, body, index, value});
+        entries.push_back(TraceEntry{&info, body, index, value, where});
     }
 
     // The first entry with this id for this body (and index); nullptr if none.
     const TraceEntry* find(std::string_view id, int body, int index = -1) const;
 };
 
-// Records into a trace only when one is given: `record(trace, q::force, b, F)`.
+// Records into a trace only when one is given: `record(trace, q::force, b, F)`, on the
+// line that computes the value (its source location is the entry's `where`).
 // A template, so that with the trace off not even the TraceValue is built.
 template <class T>
-inline void record(StepTrace* trace, const QuantityInfo& info, int body, const T& value, int index = -1)
+inline void record(StepTrace* trace, const QuantityInfo& info, int body, const T& value, int index = -1,
+                   std::source_location where = std::source_location::current())
 {
     if (trace != nullptr) {
-        trace->add(info, body, TraceValue(value), index);
+        trace->add(info, body, TraceValue(value), index, where);
     }
 }
 

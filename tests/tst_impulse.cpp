@@ -1,4 +1,4 @@
-// The impulse response of reference.md section 3, with friction, against hand
+// The impulse response of docs/references.md §3, with friction, against hand
 // derivations and conservation laws. Contacts are built directly (not detected), so
 // these tests pin down the response alone.
 #include "physics/body.h"
@@ -75,7 +75,7 @@ void TestImpulse::bothBodiesRotate()
     Body A = makeBody(Vec3::Ones(), 1, Vec3(-0.5, -0.25, 0), Vec3(1, 0, 0));
     Body B = makeBody(Vec3::Ones(), 1, Vec3(0.5, 0.25, 0), Vec3(-1, 0, 0));
     const ImpulseResult r = applyContactImpulse(contactAt(Vec3::Zero(), Vec3(-1, 0, 0)), {&A.s, &A.mp},
-                                                {&B.s, &B.mp}, 0.5, 0.0, InertiaConvention::Standard);
+                                                {&B.s, &B.mp}, 0.5, 0.0);
     // x_a = p - x_A = (0.5, 0.25, 0), x_b = (-0.5, -0.25, 0)
     QVERIFY(near(r.x_a, Vec3(0.5, 0.25, 0), kExact));
     QVERIFY(near(r.x_b, Vec3(-0.5, -0.25, 0), kExact));
@@ -113,7 +113,7 @@ void TestImpulse::fixedBodyIsInfiniteMass()
     Body A = makeBody(Vec3::Ones(), 1, Vec3(-0.5, -0.25, 0), Vec3(2, 0, 0));
     Body B = makeBody(Vec3::Ones(), 1, Vec3(0.5, 0.25, 0), Vec3::Zero(), Vec3::Zero(), Quat::Identity(), true);
     const ImpulseResult r = applyContactImpulse(contactAt(Vec3::Zero(), Vec3(-1, 0, 0)), {&A.s, &A.mp},
-                                                {&B.s, &B.mp}, 0.5, 0.0, InertiaConvention::Standard);
+                                                {&B.s, &B.mp}, 0.5, 0.0);
     QCOMPARE(r.invMassB, 0.0);
     QCOMPARE(r.rotationalB, 0.0);
     QVERIFY(std::abs(r.J - 24.0 / 11.0) < kExact);
@@ -130,7 +130,7 @@ void TestImpulse::separatingPairGetsNoImpulse()
     Body B = makeBody(Vec3::Ones(), 1, Vec3(0.5, 0, 0), Vec3::Zero());
     const BodyState before = A.s;
     const ImpulseResult r = applyContactImpulse(contactAt(Vec3::Zero(), Vec3(-1, 0, 0)), {&A.s, &A.mp},
-                                                {&B.s, &B.mp}, 1.0, 0.5, InertiaConvention::Standard);
+                                                {&B.s, &B.mp}, 1.0, 0.5);
     QVERIFY(r.separating);
     QCOMPARE(r.J, 0.0);
     QCOMPARE(A.s.v_W, before.v_W);
@@ -138,8 +138,8 @@ void TestImpulse::separatingPairGetsNoImpulse()
     QCOMPARE(B.s.v_W, Vec3::Zero().eval());
     // Negative control: the same pair approaching does get an impulse.
     A.s.v_W = Vec3(1, 0, 0);
-    QVERIFY(!applyContactImpulse(contactAt(Vec3::Zero(), Vec3(-1, 0, 0)), {&A.s, &A.mp}, {&B.s, &B.mp}, 1.0, 0.0,
-                                 InertiaConvention::Standard).separating);
+    QVERIFY(!applyContactImpulse(contactAt(Vec3::Zero(), Vec3(-1, 0, 0)), {&A.s, &A.mp}, {&B.s, &B.mp}, 1.0, 0.0)
+                     .separating);
 }
 
 void TestImpulse::conservation_data()
@@ -166,7 +166,7 @@ void TestImpulse::conservation()
     const Vec3 n = Vec3(-1, 0.2, 0.1).normalized();
     const Diagnostics before = pairDiagnostics(A, B);
     const ImpulseResult r = applyContactImpulse(contactAt(Vec3(0.1, -0.05, 0.15), n), {&A.s, &A.mp}, {&B.s, &B.mp},
-                                                c, mu, InertiaConvention::Standard);
+                                                c, mu);
     QVERIFY(!r.separating);
     QVERIFY(r.J > 0.0);
     const Diagnostics after = pairDiagnostics(A, B);
@@ -205,7 +205,7 @@ void TestImpulse::centralImpactEnergyLoss()
     Body B = makeBody(Vec3::Ones(), m2, Vec3(1, 0, 0), Vec3(-1, 0, 0));
     const double before = pairDiagnostics(A, B).kinetic;
     const ImpulseResult r = applyContactImpulse(contactAt(Vec3::Zero(), Vec3(-1, 0, 0)), {&A.s, &A.mp},
-                                                {&B.s, &B.mp}, c, 0.0, InertiaConvention::Standard);
+                                                {&B.s, &B.mp}, c, 0.0);
     const double reduced = m1 * m2 / (m1 + m2);
     QVERIFY(std::abs(r.J - (1 + c) * reduced * u) < 1e-13);
     const double lost = before - pairDiagnostics(A, B).kinetic;
@@ -235,7 +235,7 @@ void TestImpulse::friction()
     QFETCH(bool, clamped);
     Body A = makeBody(Vec3::Ones(), 1, Vec3(0, 0.5, 0), Vec3(2, -1, 0));
     const ImpulseResult r = applyContactImpulse(contactAt(Vec3(0, 0, 0), Vec3(0, 1, 0)), {&A.s, &A.mp},
-                                                ResponseBody{}, 0.0, mu, InertiaConvention::Standard);
+                                                ResponseBody{}, 0.0, mu);
     QVERIFY(std::abs(r.J - 1.0) < kExact);
     QVERIFY(std::abs(r.J_t - expectedJt) < kExact);
     QCOMPARE(r.frictionClamped, clamped);
@@ -259,8 +259,7 @@ void TestImpulse::particleResponseLeavesSpinAlone()
     Body A = makeBody(Vec3(1, 2, 1), 1, Vec3(0, 1, 0), Vec3(0, -2, 0), Vec3(0, 0, 1.5));
     const Vec3 L0 = A.s.L_W;
     const ImpulseResult r = applyContactImpulse(contactAt(Vec3(0.4, 0, 0.3), Vec3(0, 1, 0)),
-                                                {&A.s, &A.mp, false}, ResponseBody{}, 1.0, 0.0,
-                                                InertiaConvention::Standard);
+                                                {&A.s, &A.mp, false}, ResponseBody{}, 1.0, 0.0);
     QCOMPARE(r.rotationalA, 0.0);
     QVERIFY(std::abs(r.J - 4.0) < kExact);
     QCOMPARE(A.s.L_W, L0);

@@ -75,20 +75,22 @@ void TestPipeline::lessonPipelines_data()
     QTest::addColumn<QString>("scene");
     QTest::addColumn<QString>("expected");
     const QString ee = QStringLiteral("integration:explicit-euler");
+    // energy_bound (T_n and T_max before the integration) and energy_check after it
+    // come with the scene's energy_jump; a second finite_check follows the contact stages.
     // 1 body: no pair even with box_collisions on; 2 probes.
-    QTest::newRow("01") << "01-one-step/scene.json" << "loads," + ee + ",finite_check,energy_check,probes";
-    QTest::newRow("02") << "02-single-body/scene.json" << "loads," + ee + ",finite_check,energy_check,probes";
-    QTest::newRow("03") << "03-two-box-collision/scene.json" << "loads," + ee + ",finite_check,energy_check,box_box";
+    QTest::newRow("01") << "01-one-step/scene.json" << "loads,energy_bound," + ee + ",finite_check,energy_check,probes";
+    QTest::newRow("02") << "02-single-body/scene.json" << "loads,energy_bound," + ee + ",finite_check,energy_check,probes";
+    QTest::newRow("03") << "03-two-box-collision/scene.json" << "loads,energy_bound," + ee + ",finite_check,energy_check,box_box,finite_check";
     QTest::newRow("04") << "04-many-boxes/scene.json"
-                        << "gravity,loads," + ee + ",finite_check,energy_check,box_box,box_plane,correction";
-    QTest::newRow("05") << "05-spinning/scene.json" << "loads," + ee + ",finite_check,energy_check";
-    QTest::newRow("06") << "06-box-on-plane/scene.json" << "gravity,loads," + ee + ",finite_check,energy_check,box_plane";
+                        << "gravity,loads,energy_bound," + ee + ",finite_check,energy_check,box_box,box_plane,correction,finite_check";
+    QTest::newRow("05") << "05-spinning/scene.json" << "loads,energy_bound," + ee + ",finite_check,energy_check";
+    QTest::newRow("06") << "06-box-on-plane/scene.json" << "gravity,loads,energy_bound," + ee + ",finite_check,energy_check,box_plane,finite_check";
     QTest::newRow("07") << "07-bounce/scene.json"
-                        << "gravity,loads," + ee + ",finite_check,energy_check,box_plane,correction";
-    QTest::newRow("07 impulses") << "07-bounce/impulses.json" << "loads," + ee + ",finite_check,energy_check,box_box";
-    QTest::newRow("08") << "08-conventions/scene.json" << "loads," + ee + ",finite_check,energy_check,probes";
+                        << "gravity,loads,energy_bound," + ee + ",finite_check,energy_check,box_plane,correction,finite_check";
+    QTest::newRow("07 impulses") << "07-bounce/impulses.json" << "loads,energy_bound," + ee + ",finite_check,energy_check,box_box,finite_check";
+    QTest::newRow("08") << "08-conventions/scene.json" << "loads,energy_bound," + ee + ",finite_check,energy_check,probes";
     QTest::newRow("09") << "09-tennis-racket/scene.json"
-                        << "loads," + ee + ",integration:rk4,integration:implicit-midpoint,finite_check,energy_check";
+                        << "loads,energy_bound," + ee + ",integration:rk4,integration:implicit-midpoint,finite_check,energy_check";
 }
 
 void TestPipeline::lessonPipelines()
@@ -127,7 +129,7 @@ void TestPipeline::freeBodyTraceHasNoCollisionOrGravity()
 void TestPipeline::gravityWithoutPlanesOrPairs()
 {
     rbw::World world(twoBoxes(true, false, false));
-    QCOMPARE(labels(world), QStringLiteral("gravity,loads,integration:explicit-euler,finite_check,energy_check"));
+    QCOMPARE(labels(world), QStringLiteral("gravity,loads,energy_bound,integration:explicit-euler,finite_check,energy_check"));
     QVERIFY(!world.runsCollisionStage());
     rbw::StepTrace trace;
     QVERIFY(world.step(&trace).ok);
@@ -144,8 +146,8 @@ void TestPipeline::allStagesOption()
     rbw::World minimal(twoBoxes(false, false, false));
     rbw::World all(s, rbw::WorldOptions{true});
     QCOMPARE(labels(all),
-             QStringLiteral("gravity,loads,integration:explicit-euler,finite_check,energy_check,box_box,box_plane"));
-    QCOMPARE(labels(minimal), QStringLiteral("loads,integration:explicit-euler,finite_check,energy_check"));
+             QStringLiteral("gravity,loads,energy_bound,integration:explicit-euler,finite_check,energy_check,box_box,box_plane,finite_check"));
+    QCOMPARE(labels(minimal), QStringLiteral("loads,energy_bound,integration:explicit-euler,finite_check,energy_check"));
     for (int k = 0; k < 100; ++k) {
         QVERIFY(all.step().ok);
         QVERIFY(minimal.step().ok);
@@ -172,10 +174,10 @@ void TestPipeline::perBodyIntegratorGroups()
     s.bodies[1].integrator = "rk4";
     rbw::World world(s);
     QCOMPARE(labels(world),
-             QStringLiteral("loads,integration:explicit-euler,integration:rk4,finite_check,energy_check"));
+             QStringLiteral("loads,energy_bound,integration:explicit-euler,integration:rk4,finite_check,energy_check"));
     QCOMPARE(QString::fromLatin1(world.integratorOf(0).name()), QStringLiteral("explicit-euler"));
     QCOMPARE(QString::fromLatin1(world.integratorOf(1).name()), QStringLiteral("rk4"));
-    QCOMPARE(world.pipeline()[2].bodies, std::vector<int>{1});
+    QCOMPARE(world.pipeline()[3].bodies, std::vector<int>{1});
     rbw::StepTrace trace;
     QVERIFY(world.step(&trace).ok);
     QVERIFY(trace.find("stage_angular_velocity", 1, 1) != nullptr);

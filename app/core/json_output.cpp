@@ -68,9 +68,11 @@ QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene)
             {"unit", QString::fromUtf8(e.info->unit)},
             {"kind", valueKind(e.value)},
             {"value", jsonValue(e.value)},
+            {"source", QString::fromStdString(sourceText(e))},
         };
         if (e.index >= 0) {
             q.insert("index", e.index);
+            q.insert("index_kind", indexKindName(e.info->indexKind));
         }
         quantities.append(q);
     }
@@ -88,11 +90,15 @@ QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene)
             {"points_averaged", c.pointCount},
             {"separating", c.separating},
         };
+        // and where each was computed: "sources": {"impulse": "physics/collision/impulse.cpp:112", ...}
+        QJsonObject sources;
         for (const TraceEntry& e : trace.entries) {
             if (e.info->stage == Stage::Collision && e.index == k) {
                 contact.insert(QString::fromLatin1(e.info->id), jsonValue(e.value));
+                sources.insert(QString::fromLatin1(e.info->id), QString::fromStdString(sourceText(e)));
             }
         }
+        contact.insert("sources", sources);
         contacts.append(contact);
     }
     return QJsonObject{

@@ -206,11 +206,13 @@ std::optional<ContactGeometry> collideBoxBoxSAT(const BoxPose& A, const BoxPose&
     if (bestAxis < 3) {
         // A face wins: B's corner with the smallest corner . toCenter.
         contact.p_W = cornerMinimising(cornersB_W, toCenter_W);
+        contact.where = std::source_location::current();
         contact.feature = ContactFeature::VertexFace;
     } else if (bestAxis < 6) {
         // B face wins: A's corner with the smallest corner . (-toCenter).
         const Vec3 toA_W = -toCenter_W;
         contact.p_W = cornerMinimising(cornersA_W, toA_W);
+        contact.where = std::source_location::current();
         contact.feature = ContactFeature::FaceVertex;
     } else {
         const int i = (bestAxis - 6) / 3;
@@ -238,6 +240,7 @@ std::optional<ContactGeometry> collideBoxBoxSAT(const BoxPose& A, const BoxPose&
         const double twoSize = 2.0 * B.halfExtents[j];
         contact.p_W = edgeContactPoint(pOne_W, a_W[static_cast<size_t>(i)], oneSize, pTwo_W,
                                        b_W[static_cast<size_t>(j)], twoSize, bestSingleAxis);
+        contact.where = std::source_location::current();
         contact.feature = ContactFeature::EdgeEdge;
     }
     return contact;

@@ -19,7 +19,7 @@
 //   p_W         the single contact point                                         [m]
 //   depth       the smallest overlap over all tested axes                         [m]
 //
-// The rules (reference.md section 2, and the template's source):
+// The rules (docs/references.md §2, and the template's source):
 //   1. Axes in the order a_0, a_1, a_2, b_0, b_1, b_2, then a_i x b_j (i outer,
 //      j inner), normalised. Cross products with |a_i x b_j| <= 1e-9 (the sine of
 //      the angle between two unit edge directions) are skipped: parallel edges

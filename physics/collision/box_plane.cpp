@@ -26,6 +26,7 @@ int collideBoxPlane(const BoxPose& box, const PlaneDef& plane, std::vector<Conta
         if (d <= 0.0) {
             ContactGeometry contact;
             contact.p_W = corner_W;
+            contact.where = std::source_location::current();
             // The plane is body B: n points from B (plane) to A (box) = the plane normal.
             contact.n_W = plane.n_W;
             // Penetration depth = -d >= 0 (written 0.0 - d so that d == 0 gives +0).
@@ -54,6 +55,7 @@ ContactGeometry averageContact(const std::vector<ContactGeometry>& contacts, std
     }
     ContactGeometry average;
     average.p_W = sum_W / static_cast<double>(count);
+    average.where = std::source_location::current();
     average.n_W = contacts[first].n_W;
     average.depth = maxDepth;
     average.feature = ContactFeature::VertexPlane;

@@ -1,5 +1,5 @@
 // Box-plane narrow phase: the corners of a box that lie on or below a fixed plane
-// (Napier SET09119 practical 6, reference.md section 4), and the rigid-body
+// (Napier SET09119 practical 6, docs/references.md §4), and the rigid-body
 // assessment's single averaged contact.
 //
 // Glossary

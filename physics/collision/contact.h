@@ -12,6 +12,7 @@
 #include "physics/math_types.h"
 
 #include <array>
+#include <source_location>
 #include <string>
 
 namespace rbw {
@@ -29,6 +30,7 @@ struct ContactGeometry {
     double depth = 0.0;
     ContactFeature feature = ContactFeature::VertexFace;
     int axis = -1;   // SAT: the winning axis, 0-2 A faces, 3-5 B faces, 6-14 edge pairs (3*i + j)
+    std::source_location where;   // the narrow-phase statement that computed p (trace rows of p, n, d)
 };
 
 // An oriented box in the world: centre, rotation (columns are the body axes in

@@ -1,6 +1,6 @@
 // Collision response: one impulse at one contact point (TUM rigid-body slides;
-// Baraff, "Physically Based Modeling", rigid body notes, section 8; reference.md
-// section 3), with Coulomb friction as a second, tangential impulse.
+// Baraff, "Physically Based Modeling", rigid body notes, section 8; docs/references.md
+// §3), with Coulomb friction as a second, tangential impulse.
 //
 // Glossary (A is the first body; B the second body or a fixed plane)
 //   x_a, x_b     contact point relative to each centre of mass: p - x_A, p - x_B  [m]
@@ -12,7 +12,7 @@
 //   J            normal impulse magnitude, applied +J n to A and -J n to B        [N s]
 //   t, J_t       unit tangent opposite to the sliding velocity, friction impulse  [-], [N s]
 //
-// Normal impulse (reference.md section 3):
+// Normal impulse (docs/references.md §3):
 //   J = -(1 + c) (v_rel . n) / (1/M_A + 1/M_B + [(I_A^-1 (x_a x n)) x x_a + (I_B^-1 (x_b x n)) x x_b] . n)
 // Friction (derived the same way for the tangent t instead of n, with no bounce):
 //   the impulse that stops sliding is J_t* = -(v_rel' . t) / (1/M_A + 1/M_B + [(I_A^-1 (x_a x t)) x x_a
@@ -25,6 +25,7 @@
 #include "physics/body.h"
 #include "physics/collision/contact.h"
 #include "physics/inertia.h"
+#include "physics/trace.h"
 
 namespace rbw {
 
@@ -34,6 +35,8 @@ struct ResponseBody {
     BodyState* state = nullptr;          // nullptr for a fixed plane
     const MassProperties* mass = nullptr;
     bool angular = true;                 // false: treated as a particle (no x_a x J n term)
+    int index = -1;                      // the body's index in the world (trace rows), -1 for a plane
+    InertiaConvention convention = InertiaConvention::Standard;   // for omega = I^-1 L after the impulse
 
     double invM() const { return state != nullptr && mass != nullptr ? mass->invM : 0.0; }
 };
@@ -43,7 +46,7 @@ struct ImpulseResult {
     Vec3 velocity_a = Vec3::Zero(), velocity_b = Vec3::Zero();   // v_A(p), v_B(p) before
     Vec3 v_rel = Vec3::Zero();
     double v_rel_n = 0.0;
-    bool separating = false;        // v_rel . n > 0: no impulse (reference.md section 3)
+    bool separating = false;        // v_rel . n > 0: no impulse (docs/references.md §3)
     double restitution = 0.0;
     double numerator = 0.0;         // -(1 + c) v_rel . n
     double invMassA = 0.0, invMassB = 0.0;
@@ -64,8 +67,10 @@ struct ImpulseResult {
 };
 
 // Computes and applies the impulse at contact g between A and B (B may be a plane),
-// updating v, L and the derived omega of both. Returns every intermediate number.
+// updating v, L and the derived omega of both (each with its own convention). Returns
+// every intermediate number and, given a trace, records each where it is computed, as
+// entries of contact number `contact`.
 ImpulseResult applyContactImpulse(const ContactGeometry& g, ResponseBody A, ResponseBody B, double restitution,
-                                  double mu, InertiaConvention convention);
+                                  double mu, StepTrace* trace = nullptr, int contact = -1);
 
 } // namespace rbw

@@ -1,5 +1,5 @@
 // Explicit Euler in exactly the order of the TUM lecture's "Simulation Algorithm 3D"
-// (reference.md section 1), first order. Position and orientation use the OLD v and
+// (docs/references.md §1), first order. Position and orientation use the OLD v and
 // omega; the orientation quaternion is renormalised after its update.
 #pragma once
 
@@ -11,8 +11,7 @@ class ExplicitEuler final : public Integrator {
 public:
     static constexpr const char* kName = "explicit-euler";
     const char* name() const override { return kName; }
-    void integrate(const IntegrationInput& in, std::vector<BodyState>& states,
-                   StepTrace* trace) const override;
+    void advance(const BodyStep& step, BodyState& s) const override;
 };
 
 } // namespace rbw

@@ -13,7 +13,7 @@
 //   r_{n+1} = normalise(r_n + h/2 (0, omega') r_n)
 //   L_{n+1} = I(r_{n+1}) omega' = R_{n+1} I0 R_{n+1}^T omega'       (so omega_{n+1} = omega')
 //
-// It damps |L| and T slowly instead of letting them grow (reference.md section 5: max
+// It damps |L| and T slowly instead of letting them grow (docs/references.md §5: max
 // |dE|/E ~ 1e-2 over 100 s of the Dzhanibekov case at h = 0.01), and L_W is not
 // conserved exactly. Its point is stability at large h|omega|.
 //
@@ -39,8 +39,7 @@ public:
     // that shows skipping changes nothing).
     explicit ImplicitGyroscopic(bool skipIsotropic = true) : skipIsotropic_(skipIsotropic) {}
     const char* name() const override { return kName; }
-    void integrate(const IntegrationInput& in, std::vector<BodyState>& states,
-                   StepTrace* trace) const override;
+    void advance(const BodyStep& step, BodyState& s) const override;
 
 private:
     bool skipIsotropic_;

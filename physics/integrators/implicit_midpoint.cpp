@@ -1,6 +1,5 @@
 #include "physics/integrators/implicit_midpoint.h"
 
-#include "physics/integrators/integrator_quantities.h"
 #include "physics/integrators/rigid_ode.h"
 #include "physics/quantities.h"
 
@@ -93,72 +92,59 @@ SolveResult solveWorldMidpoint(const Quat& r0, const Vec3& L_W, const Vec3& omeg
 
 } // namespace
 
-void ImplicitMidpoint::integrate(const IntegrationInput& in, std::vector<BodyState>& states,
-                                 StepTrace* trace) const
+void ImplicitMidpoint::advance(const BodyStep& step, BodyState& s) const
 {
-    const double h = in.h;
-    for (int b = 0; b < static_cast<int>(states.size()); ++b) {
-        if (!in.advances(b)) {
-            continue;
-        }
-        BodyState& s = states[b];
-        const MassProperties& mp = in.mass[b];
-        const BodyLoad& load = in.loads[b];
+    const double h = step.h;
 
-        // Half kick: v <- v + h/2 F/M,  L <- L + h/2 q;  drift: x <- x + h v
-        const Vec3 halfDv_W = (0.5 * h * mp.invM) * load.F_W;
-        const Vec3 halfDL_W = (0.5 * h) * load.q_W;
-        s.v_W += halfDv_W;
-        s.x_W += h * s.v_W;
-        record(trace, q::verlet_position, b, s.x_W);
-        s.L_W += halfDL_W;
+    // Half kick: v <- v + h/2 F/M,  L <- L + h/2 q;  drift: x <- x + h v
+    const Vec3 halfDv_W = (0.5 * h * step.mp.invM) * step.load.F_W;
+    const Vec3 halfDL_W = (0.5 * h) * step.load.q_W;
+    s.v_W += halfDv_W;
+    s.x_W += h * s.v_W;
+    step.record(q::verlet_position, s.x_W);
+    s.L_W += halfDL_W;
 
-        if (in.conventionOf(b) == InertiaConvention::CourseTemplate) {
-            // r_{n+1} = p r_n with omega_m = I^-1(r_m) L  (fixed point, see the header)
-            const Vec3 omega0_W = s.Iinv_W * s.L_W;
-            const SolveResult sol = solveWorldMidpoint(s.q_WB, s.L_W, omega0_W, mp, h, in.conventionOf(b));
-            record(trace, q::midpoint_world_angular_velocity, b, sol.value);
-            record(trace, q::fixed_point_iterations, b, double(sol.iterations));
-            record(trace, q::fixed_point_residual, b, sol.residual);
-            s.q_WB = normalisedOrientation(midpointRotation(sol.value, h) * s.q_WB);
-            record(trace, q::cayley_world_orientation, b, s.q_WB);
+    if (step.convention == InertiaConvention::CourseTemplate) {
+        // r_{n+1} = p r_n with omega_m = I^-1(r_m) L  (fixed point, see the header)
+        const Vec3 omega0_W = s.Iinv_W * s.L_W;
+        const SolveResult sol = solveWorldMidpoint(s.q_WB, s.L_W, omega0_W, step.mp, h, step.convention);
+        step.record(q::midpoint_world_angular_velocity, sol.value);
+        step.record(q::fixed_point_iterations, double(sol.iterations));
+        step.record(q::fixed_point_residual, sol.residual);
+        s.q_WB = normalisedOrientation(midpointRotation(sol.value, h) * s.q_WB);
+        step.record(q::cayley_world_orientation, s.q_WB);
+    } else {
+        // L_B = R_n^T L
+        const Vec3 L0_B = s.R_WB.transpose() * s.L_W;
+        step.record(q::body_angular_momentum, L0_B);
+        SolveResult sol;
+        if (skipIsotropic_ && isIsotropic(step.mp.I0_B)) {
+            // I0 = k E: omega_m x L_m = 0, so L_B' = L_B
+            step.record(q::gyroscopic_skipped, 1.0);
+            sol.value = L0_B;
         } else {
-            // L_B = R_n^T L
-            const Vec3 L0_B = s.R_WB.transpose() * s.L_W;
-            record(trace, q::body_angular_momentum, b, L0_B);
-            SolveResult sol;
-            if (skipIsotropic_ && isIsotropic(mp.I0_B)) {
-                // I0 = k E: omega_m x L_m = 0, so L_B' = L_B
-                record(trace, q::gyroscopic_skipped, b, 1.0);
-                sol.value = L0_B;
-            } else {
-                // L_B' = L_B - h omega_m x L_m  (Newton to machine precision)
-                sol = solveLiePoisson(L0_B, mp.I0inv_B, h);
-                record(trace, q::body_angular_momentum_new, b, sol.value);
-                record(trace, q::newton_iterations, b, double(sol.iterations));
-                record(trace, q::midpoint_newton_residual, b, sol.residual);
-            }
-            // omega_m = I0^-1 (L_B + L_B')/2
-            const Vec3 omegam_B = mp.I0inv_B * (0.5 * (L0_B + sol.value));
-            record(trace, q::midpoint_body_angular_velocity, b, omegam_B);
-            // c = (1, h/2 omega_m)/|.| = cay(h [omega_m]x);  r_{n+1} = r_n c
-            const Vec3 half_B = (0.5 * h) * omegam_B;
-            const Quat c = Quat(1.0, half_B.x(), half_B.y(), half_B.z()).normalized();
-            record(trace, q::cayley_rotation, b, c);
-            s.q_WB = normalisedOrientation(s.q_WB * c);
-            record(trace, q::cayley_orientation, b, s.q_WB);
+            // L_B' = L_B - h omega_m x L_m  (Newton to machine precision)
+            sol = solveLiePoisson(L0_B, step.mp.I0inv_B, h);
+            step.record(q::body_angular_momentum_new, sol.value);
+            step.record(q::newton_iterations, double(sol.iterations));
+            step.record(q::midpoint_newton_residual, sol.residual);
         }
-
-        // Half kick: v <- v + h/2 F/M,  L <- L + h/2 q
-        s.v_W += halfDv_W;
-        record(trace, q::verlet_linear_velocity, b, s.v_W);
-        s.L_W += halfDL_W;
-        record(trace, q::half_kick_angular_momentum, b, s.L_W);
-
-        // R = R(r), I^-1 = R I0^-1 R^T, omega = I^-1 L
-        updateDerived(mp, s, in.conventionOf(b));
-        recordDerived(trace, b, mp, s, in.conventionOf(b));
+        // omega_m = I0^-1 (L_B + L_B')/2
+        const Vec3 omegam_B = step.mp.I0inv_B * (0.5 * (L0_B + sol.value));
+        step.record(q::midpoint_body_angular_velocity, omegam_B);
+        // c = (1, h/2 omega_m)/|.| = cay(h [omega_m]x);  r_{n+1} = r_n c
+        const Vec3 half_B = (0.5 * h) * omegam_B;
+        const Quat c = Quat(1.0, half_B.x(), half_B.y(), half_B.z()).normalized();
+        step.record(q::cayley_rotation, c);
+        s.q_WB = normalisedOrientation(s.q_WB * c);
+        step.record(q::cayley_orientation, s.q_WB);
     }
+
+    // Half kick: v <- v + h/2 F/M,  L <- L + h/2 q
+    s.v_W += halfDv_W;
+    step.record(q::verlet_linear_velocity, s.v_W);
+    s.L_W += halfDL_W;
+    step.record(q::half_kick_angular_momentum, s.L_W);
 }
 
 } // namespace rbw

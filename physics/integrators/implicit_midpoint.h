@@ -40,8 +40,7 @@ public:
     static constexpr int kMaxIterations = 50;
     explicit ImplicitMidpoint(bool skipIsotropic = true) : skipIsotropic_(skipIsotropic) {}
     const char* name() const override { return kName; }
-    void integrate(const IntegrationInput& in, std::vector<BodyState>& states,
-                   StepTrace* trace) const override;
+    void advance(const BodyStep& step, BodyState& s) const override;
 
 private:
     bool skipIsotropic_;

@@ -15,8 +15,7 @@ class Midpoint final : public Integrator {
 public:
     static constexpr const char* kName = "midpoint";
     const char* name() const override { return kName; }
-    void integrate(const IntegrationInput& in, std::vector<BodyState>& states,
-                   StepTrace* trace) const override;
+    void advance(const BodyStep& step, BodyState& s) const override;
 };
 
 } // namespace rbw

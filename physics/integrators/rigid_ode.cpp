@@ -1,6 +1,5 @@
 #include "physics/integrators/rigid_ode.h"
 
-#include "physics/integrators/integrator_quantities.h"
 #include "physics/quantities.h"
 
 #include <cmath>
@@ -37,18 +36,21 @@ Vec3 angularVelocityAt(const Quat& r, const Vec3& L_W, const MassProperties& mp,
     return Iinv_W * L_W;
 }
 
-RigidOdeRate rigidOdeRate(const RigidOdeState& y, const MassProperties& mp, const BodyLoad& load,
-                          InertiaConvention convention)
+RigidOdeRate rigidOdeRate(const RigidOdeState& y, const BodyStep& step, int stage)
 {
     RigidOdeRate k;
     // x' = v,  v' = F/M
     k.xDot = y.v_W;
-    k.vDot = mp.invM * load.F_W;
+    step.record(q::stage_velocity, k.xDot, stage);
+    k.vDot = step.mp.invM * step.load.F_W;
     // omega = I^-1(r) L,  r' = 1/2 (0, omega) r
-    k.omega_W = angularVelocityAt(y.r, y.L_W, mp, convention);
+    k.omega_W = angularVelocityAt(y.r, y.L_W, step.mp, step.convention);
+    step.record(q::stage_angular_velocity, k.omega_W, stage);
     k.rDot = orientationRate(k.omega_W, y.r);
+    step.record(q::stage_orientation_rate, k.rDot, stage);
     // L' = q
-    k.LDot = load.q_W;
+    k.LDot = step.load.q_W;
+    step.record(q::stage_torque, k.LDot, stage);
     return k;
 }
 
@@ -62,35 +64,9 @@ RigidOdeState advanced(const RigidOdeState& y, double a, const RigidOdeRate& k)
     return out;
 }
 
-void recordRkStage(StepTrace* trace, int body, int i, const RigidOdeRate& k)
-{
-    if (trace == nullptr) {
-        return;
-    }
-    trace->add(q::stage_velocity, body, k.xDot, i);
-    trace->add(q::stage_angular_velocity, body, k.omega_W, i);
-    trace->add(q::stage_orientation_rate, body, k.rDot, i);
-    trace->add(q::stage_torque, body, k.LDot, i);
-}
-
 bool isIsotropic(const Mat3& I0_B)
 {
     return I0_B.isDiagonal(0.0) && I0_B(0, 0) == I0_B(1, 1) && I0_B(1, 1) == I0_B(2, 2);
-}
-
-void recordDerived(StepTrace* trace, int body, const MassProperties& mp, const BodyState& s,
-                   InertiaConvention convention)
-{
-    if (trace == nullptr) {
-        return;
-    }
-    trace->add(q::inertia_body, body, mp.I0_B);
-    trace->add(q::inverse_inertia_body, body, mp.I0inv_B);
-    trace->add(q::rotation_matrix, body, s.R_WB);
-    trace->add(convention == InertiaConvention::CourseTemplate ? q::inverse_inertia_world_template
-                                                               : q::inverse_inertia_world,
-               body, s.Iinv_W);
-    trace->add(q::angular_velocity, body, s.omega_W);
 }
 
 } // namespace rbw

@@ -4,7 +4,7 @@
 // State y = (x, r, P, L) with P = M v (kept as v here), world frame:
 //   x' = v,   v' = F/M,   r' = 1/2 (0, omega) r,   L' = q,
 //   omega = I^-1(r) L,   I^-1(r) = R(r) I0^-1 R(r)^T   (or R^T I0^-1 R, course template)
-// (TUM "Simulation Algorithm 3D", reference.md section 1; Baraff, "Physically Based
+// (TUM "Simulation Algorithm 3D", docs/references.md §1; Baraff, "Physically Based
 // Modeling: Rigid Body Simulation", SIGGRAPH 2001 notes, section 2.9.)
 //
 // Glossary
@@ -36,15 +36,12 @@ struct RigidOdeRate {
     Vec3 omega_W = Vec3::Zero();   // = I^-1(r) L
 };
 
-// f(y): the right-hand side above, with the step's constant load (F, q).
-RigidOdeRate rigidOdeRate(const RigidOdeState& y, const MassProperties& mp, const BodyLoad& load,
-                          InertiaConvention convention);
+// f(y): the right-hand side above, with the step's constant load (F, q); records the
+// rows of RK stage `stage` (index i = 1, 2, ...): k_x,i, omega_i, k_r,i, k_L,i.
+RigidOdeRate rigidOdeRate(const RigidOdeState& y, const BodyStep& step, int stage);
 
 // y + a k, componentwise (the RK stage combination).
 RigidOdeState advanced(const RigidOdeState& y, double a, const RigidOdeRate& k);
-
-// The rows of RK stage i (index i = 1, 2, ...): k_x,i, omega_i, k_r,i, k_L,i.
-void recordRkStage(StepTrace* trace, int body, int i, const RigidOdeRate& k);
 
 // dr/dt = 1/2 (0, omega_W) r  (quaternion product, omega in the world frame).
 Quat orientationRate(const Vec3& omega_W, const Quat& r);
@@ -58,10 +55,5 @@ Vec3 angularVelocityAt(const Quat& r, const Vec3& L_W, const MassProperties& mp,
 
 // I0 = k E (a cube, a sphere): the gyroscopic term omega x I0 omega is exactly zero.
 bool isIsotropic(const Mat3& I0_B);
-
-// The end-of-step rows every integrator shares, as explicit Euler writes them:
-// I0, I0^-1, R, I^-1 (with the convention's formula) and omega.
-void recordDerived(StepTrace* trace, int body, const MassProperties& mp, const BodyState& s,
-                   InertiaConvention convention);
 
 } // namespace rbw

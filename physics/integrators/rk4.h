@@ -14,12 +14,11 @@
 
 namespace rbw {
 
-class Rk4 final : public Integrator {
+class Rk4 : public Integrator {
 public:
     static constexpr const char* kName = "rk4";
     const char* name() const override { return kName; }
-    void integrate(const IntegrationInput& in, std::vector<BodyState>& states,
-                   StepTrace* trace) const override;
+    void advance(const BodyStep& step, BodyState& s) const override;
 };
 
 } // namespace rbw

@@ -1,6 +1,5 @@
 #include "physics/integrators/rotation_matrix.h"
 
-#include "physics/integrators/integrator_quantities.h"
 #include "physics/integrators/rigid_ode.h"
 #include "physics/integrators/rotation_matrix_orthonormalised.h"
 #include "physics/quantities.h"
@@ -13,63 +12,44 @@ double orthonormalityError(const Mat3& R)
     return (R.transpose() * R - Mat3::Identity()).norm();
 }
 
-void integrateRotationMatrix(const IntegrationInput& in, std::vector<BodyState>& states,
-                             StepTrace* trace, bool orthonormalise)
+void RotationMatrix::advance(const BodyStep& step, BodyState& s) const
 {
-    const double h = in.h;
-    for (int b = 0; b < static_cast<int>(states.size()); ++b) {
-        if (!in.advances(b)) {
-            continue;
+    const double h = step.h;
+
+    // x <- x + h v   (old v)
+    s.x_W += h * s.v_W;
+    step.record(q::position, s.x_W);
+    // v <- v + h F/M
+    s.v_W += (h * step.mp.invM) * step.load.F_W;
+    step.record(q::linear_velocity, s.v_W);
+
+    // R <- R + h [omega]x R   (old omega; Napier practical 6)
+    Mat3 R_WB = s.R_WB + h * (skew(s.omega_W) * s.R_WB);
+    step.record(q::rotation_matrix_update, R_WB);
+    if (orthonormalises()) {
+        step.record(q::orthonormality_error_before, orthonormalityError(R_WB));
+        // R <- U V^T, the nearest rotation (polar decomposition)
+        if (R_WB.allFinite()) {
+            R_WB = nearestRotation(R_WB);
         }
-        BodyState& s = states[b];
-        const MassProperties& mp = in.mass[b];
-        const BodyLoad& load = in.loads[b];
-
-        // x <- x + h v   (old v)
-        s.x_W += h * s.v_W;
-        record(trace, q::position, b, s.x_W);
-        // v <- v + h F/M
-        s.v_W += (h * mp.invM) * load.F_W;
-        record(trace, q::linear_velocity, b, s.v_W);
-
-        // R <- R + h [omega]x R   (old omega; Napier practical 6)
-        Mat3 R_WB = s.R_WB + h * (skew(s.omega_W) * s.R_WB);
-        record(trace, q::rotation_matrix_update, b, R_WB);
-        if (orthonormalise) {
-            record(trace, q::orthonormality_error_before, b, orthonormalityError(R_WB));
-            // R <- U V^T, the nearest rotation (polar decomposition)
-            if (R_WB.allFinite()) {
-                R_WB = nearestRotation(R_WB);
-            }
-            record(trace, q::polar_rotation_matrix, b, R_WB);
-        } else {
-            record(trace, q::drifting_rotation_matrix, b, R_WB);
-        }
-        s.R_WB = R_WB;
-        record(trace, q::orthonormality_error, b, orthonormalityError(R_WB));
-        record(trace, q::rotation_determinant, b, R_WB.determinant());
-
-        // r = r(R), normalised: for the views (R stays the state)
-        s.q_WB = normalisedOrientation(Quat(R_WB));
-        record(trace, q::orientation_from_matrix, b, s.q_WB);
-
-        // L <- L + h q
-        s.L_W += h * load.q_W;
-        record(trace, q::angular_momentum, b, s.L_W);
-
-        // I^-1 = R I0^-1 R^T with this R (drifted unless orthonormalised), omega = I^-1 L
-        s.Iinv_W = inverseInertiaWorld(s.R_WB, mp.I0inv_B, in.conventionOf(b));
-        s.omega_W = s.Iinv_W * s.L_W;
-        if (trace != nullptr) {
-            // as recordDerived(), without R: its row is the update above
-            trace->add(q::inertia_body, b, mp.I0_B);
-            trace->add(q::inverse_inertia_body, b, mp.I0inv_B);
-            trace->add(in.conventionOf(b) == InertiaConvention::CourseTemplate ? q::inverse_inertia_world_template
-                                                                          : q::inverse_inertia_world,
-                       b, s.Iinv_W);
-            trace->add(q::angular_velocity, b, s.omega_W);
-        }
+        step.record(q::polar_rotation_matrix, R_WB);
+    } else {
+        step.record(q::drifting_rotation_matrix, R_WB);
     }
+    s.R_WB = R_WB;
+    step.record(q::orthonormality_error, orthonormalityError(R_WB));
+    step.record(q::rotation_determinant, R_WB.determinant());
+
+    // r = r(R), normalised: for the views (R stays the state)
+    s.q_WB = normalisedOrientation(Quat(R_WB));
+    step.record(q::orientation_from_matrix, s.q_WB);
+
+    // L <- L + h q
+    s.L_W += h * step.load.q_W;
+    step.record(q::angular_momentum, s.L_W);
+
+    // I^-1 = R I0^-1 R^T with this R (drifted unless orthonormalised), omega = I^-1 L:
+    // the base, updateDerivedFromMatrix() (derivedFrom() is FromMatrix)
 }
 
 } // namespace rbw

@@ -9,7 +9,7 @@
 // reading, then normalised) for the views. Without orthonormalisation R really drifts
 // away from a rotation: R_{n+1}^T R_{n+1} = R_n^T (E + h^2 [omega]x^T [omega]x) R_n, so
 // ||R^T R - E|| grows by about h^2 |omega|^2 per step, and I^-1 is built from the
-// drifted R (reference.md section 4). The trace records ||R^T R - E||_F and det R.
+// drifted R (docs/references.md §4). The trace records ||R^T R - E||_F and det R.
 //
 // Note: anything that calls updateDerived() between steps (a contact impulse does)
 // rebuilds R from q_WB and so resets the drift.
@@ -19,23 +19,19 @@
 
 namespace rbw {
 
-// One rotation-matrix step for every movable body; orthonormalise selects the
-// polar projection of rotation_matrix_orthonormalised.h after the update.
-void integrateRotationMatrix(const IntegrationInput& in, std::vector<BodyState>& states,
-                             StepTrace* trace, bool orthonormalise);
-
 // ||R^T R - E||_F: how far R is from an orthogonal matrix.
 double orthonormalityError(const Mat3& R);
 
-class RotationMatrix final : public Integrator {
+class RotationMatrix : public Integrator {
 public:
     static constexpr const char* kName = "rotation-matrix";
     const char* name() const override { return kName; }
-    void integrate(const IntegrationInput& in, std::vector<BodyState>& states,
-                   StepTrace* trace) const override
-    {
-        integrateRotationMatrix(in, states, trace, false);
-    }
+
+protected:
+    Derived derivedFrom() const override { return Derived::FromMatrix; }
+    void advance(const BodyStep& step, BodyState& s) const override;
+    // The polar projection of rotation_matrix_orthonormalised.h after the update.
+    virtual bool orthonormalises() const { return false; }
 };
 
 } // namespace rbw

@@ -1,5 +1,7 @@
 #include "physics/integrators/rotation_matrix_orthonormalised.h"
 
+#include "physics/quantities.h"
+
 #include "physics/integrators/rotation_matrix.h"
 
 #include <Eigen/SVD>
@@ -17,12 +19,6 @@ Mat3 nearestRotation(const Mat3& M)
         U.col(2) = -U.col(2);
     }
     return U * V.transpose();
-}
-
-void RotationMatrixOrthonormalised::integrate(const IntegrationInput& in, std::vector<BodyState>& states,
-                                              StepTrace* trace) const
-{
-    integrateRotationMatrix(in, states, trace, true);
 }
 
 } // namespace rbw

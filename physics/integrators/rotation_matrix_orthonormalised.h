@@ -6,19 +6,20 @@
 // ||R^T R - E||_F stays at rounding level (<= 1e-12 in tests/integrators).
 #pragma once
 
-#include "physics/integrator.h"
+#include "physics/integrators/rotation_matrix.h"
 
 namespace rbw {
 
 // The nearest rotation to M (polar factor, det +1); M must be finite.
 Mat3 nearestRotation(const Mat3& M);
 
-class RotationMatrixOrthonormalised final : public Integrator {
+class RotationMatrixOrthonormalised final : public RotationMatrix {
 public:
     static constexpr const char* kName = "rotation-matrix-orthonormalised";
     const char* name() const override { return kName; }
-    void integrate(const IntegrationInput& in, std::vector<BodyState>& states,
-                   StepTrace* trace) const override;
+
+protected:
+    bool orthonormalises() const override { return true; }
 };
 
 } // namespace rbw

@@ -1,13 +1,13 @@
 // Reference: the torque-free asymmetric top, I1 < I2 < I3, through Jacobi elliptic
-// functions (Landau & Lifshitz, Mechanics, section 37, eq. (37.10); reference.md
-// section 5). With L^2 = |L_B|^2 and 2T = L_B . I0^-1 L_B, for L^2 > 2 T I2 (the
+// functions (Landau & Lifshitz, Mechanics, section 37, eq. (37.10); docs/references.md
+// §5). With L^2 = |L_B|^2 and 2T = L_B . I0^-1 L_B, for L^2 > 2 T I2 (the
 // polhode circles axis 3):
 //   omega1 = s1 sqrt((2T I3 - L^2)/(I1 (I3 - I1))) cn tau
 //   omega2 = s2 sqrt((2T I3 - L^2)/(I2 (I3 - I2))) sn tau
 //   omega3 = s3 sqrt((L^2 - 2T I1)/(I3 (I3 - I1))) dn tau
 //   tau = lambda t + tau0,  lambda = sqrt((I3 - I2)(L^2 - 2T I1)/(I1 I2 I3)),
 //   k^2 = (I2 - I1)(2T I3 - L^2) / ((I3 - I2)(L^2 - 2T I1))
-// (reference.md writes the same radicands with both signs flipped). sn, cn and K(k)
+// (docs/references.md §5 notes the equivalent form with both signs flipped). sn, cn and K(k)
 // come from Boost.Math (jacobi_elliptic, ellint_1), modulus k, not k^2; dn is taken as
 // sqrt(k'^2 + k^2 cn^2) with k'^2 = (I3 - I1)(L^2 - 2T I2)/((I3 - I2)(L^2 - 2T I1)),
 // because Boost 1.74's dn is inaccurate where sn = +-1 when k is near 1.

@@ -1,4 +1,4 @@
-// Reference: the Dzhanibekov (tennis-racket) case of reference.md section 5,
+// Reference: the Dzhanibekov (tennis-racket) case of docs/references.md §5,
 // I = (3, 5, 9), L_B(0) = (0, 2, 0.01): almost a spin about the intermediate axis.
 // L^2 = 4.0001, 2T = 4/5 + 0.0001/9, so L^2 - 2T I2 = 0.0001 - 5e-4/9 > 0 (the polhode
 // circles axis 3, close to the separatrix); k^2 = 6.4 / (4 (4.0001 - 3 * 2T)) = 0.99996.

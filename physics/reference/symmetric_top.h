@@ -3,7 +3,7 @@
 // Body frame (Euler's equations, L_B' = L_B x omega_B with omega_B = I0^-1 L_B):
 //   L_B(t) = (L_perp sin(Omega t + phi0), L_perp cos(Omega t + phi0), L3),
 //   Omega  = L3 (I1 - I3) / (I1 I3),   L_perp = |(L_B,x, L_B,y)|,  phi0 = atan2(L_B,x, L_B,y)
-// (reference.md section 5; Landau & Lifshitz, Mechanics, section 33, problem 1 and
+// (docs/references.md §5; Landau & Lifshitz, Mechanics, section 33, problem 1 and
 // section 36). Check: L_B x omega_B = (Omega L_y, -Omega L_x, 0), which is L_B'.
 //
 // Orientation: omega_B = L_B/I1 + Omega e3, so omega_W = L_W/I1 + Omega R e3 and
@@ -12,7 +12,7 @@
 // Omega about the symmetry axis e3. In quaternions q(t) = p(t) q0 s(t).
 // Then R(t)^T L_W = Rot(e3, -Omega t) L_B(0), the body-frame formula above.
 //
-// Worked case (reference.md): I = (3, 3, 9), L_B(0) = (0, 5, 7): Omega = 7 (3 - 9)/27 = -14/9,
+// Worked case (docs/references.md §5): I = (3, 3, 9), L_B(0) = (0, 5, 7): Omega = 7 (3 - 9)/27 = -14/9,
 // L_perp = 5, phi0 = 0, |L| = sqrt(74), precession rate sqrt(74)/3.
 #pragma once
 

@@ -38,22 +38,20 @@ double topError(const Integrator& integrator, int steps)
 }
 
 // RK4 with the sign of the rotation wrong (r' = -1/2 (0, omega) r): a deliberately
-// broken integrator for the negative control. It runs the real RK4 on a copy of the
-// body whose L is negated, so omega and the turn of r are reversed, then restores L.
-class BackwardsRk4 final : public Integrator {
+// broken integrator for the negative control. It runs the real RK4 update on the body
+// with L and omega negated, so the turn of r is reversed, then restores L (the base
+// then derives omega = I^-1 L from it).
+class BackwardsRk4 final : public rbw::Rk4 {
 public:
     const char* name() const override { return "broken-rk4"; }
-    void integrate(const IntegrationInput& in, std::vector<BodyState>& states, StepTrace* trace) const override
+
+protected:
+    void advance(const rbw::BodyStep& step, rbw::BodyState& s) const override
     {
-        for (BodyState& s : states) {
-            s.L_W = -s.L_W;
-            s.omega_W = -s.omega_W;
-        }
-        rbw::Rk4().integrate(in, states, trace);
-        for (BodyState& s : states) {
-            s.L_W = -s.L_W;
-            s.omega_W = -s.omega_W;
-        }
+        s.L_W = -s.L_W;
+        s.omega_W = -s.omega_W;
+        rbw::Rk4::advance(step, s);
+        s.L_W = -s.L_W;
     }
 };
 
@@ -160,7 +158,7 @@ void TestIntegratorAccuracy::wrongSignFailsTheOrderTest()
 // - L_W is untouched by a torque-free step of every method except implicit-gyroscopic
 //   (which writes L = I(r_{n+1}) omega'): |d|L||/|L| == 0 exactly for them.
 // - explicit-euler, implicit-gyroscopic: first order, drift ~1e-2 at h = 0.01
-//   (reference.md section 5); asserted as a band [1e-3, 1e-1] so a change is noticed.
+//   (docs/references.md §5); asserted as a band [1e-3, 1e-1] so a change is noticed.
 void TestIntegratorAccuracy::dzhanibekovConservation_data()
 {
     QTest::addColumn<QString>("name");

@@ -99,7 +99,7 @@ QString fallbackDerivationBody(const StepTrace& trace, const SceneDef& scene, in
                 if (e->body != b) continue;
                 const IndexKind kind = indexKindOf(e->info->id);
                 const QString label =
-                    e->index >= 0 && kind != IndexKind::None ? indexKindName(kind) + QLatin1Char(' ') + QString::number(e->index)
+                    e->index >= 0 && kind != IndexKind::None ? QLatin1String(indexKindName(kind)) + QLatin1Char(' ') + QString::number(e->index)
                                                              : QString();
                 html += entryRow(*e, digits, label);
             }

@@ -133,7 +133,7 @@ QString parsePlaceholder(const QString& inside, Placeholder* out)
         }
     } else if (p.prefix.isEmpty() && isMetaName(p.name)) {
         // meta text
-    } else if (catalogueInfo(p.name.toStdString()) == nullptr) {
+    } else if (findQuantity(p.name.toStdString()) == nullptr) {
         return QStringLiteral("unknown quantity '%1' in {{%2}} (see physics/quantities.h for the ids)")
             .arg(p.name, inside);
     }

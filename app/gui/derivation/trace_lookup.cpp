@@ -1,6 +1,5 @@
 #include "app/gui/derivation/trace_lookup.h"
 
-#include "physics/quantities.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,72 +7,19 @@
 
 namespace rbw {
 
-const std::vector<const QuantityInfo*>& quantityCatalogue()
-{
-    static const std::vector<const QuantityInfo*> all = {
-        &q::gravity_force, &q::applied_force, &q::application_point, &q::lever_arm, &q::force,
-        &q::applied_torque, &q::torque,
-        &q::position, &q::linear_velocity, &q::orientation, &q::angular_momentum, &q::inertia_body,
-        &q::inverse_inertia_body, &q::rotation_matrix, &q::inverse_inertia_world, &q::angular_velocity,
-        &q::probe_position, &q::point_velocity,
-        &q::pairs_tested, &q::pairs_overlapping, &q::contact_point, &q::contact_normal, &q::contact_depth,
-        &q::x_a, &q::x_b, &q::velocity_a, &q::velocity_b, &q::relative_velocity, &q::normal_velocity,
-        &q::restitution, &q::numerator, &q::inv_mass_a, &q::inv_mass_b, &q::rotational_a, &q::rotational_b,
-        &q::denominator, &q::impulse, &q::friction_impulse, &q::friction_coefficient, &q::sliding,
-        &q::delta_v_a, &q::delta_v_b, &q::delta_L_a, &q::delta_L_b, &q::linear_velocity_a,
-        &q::linear_velocity_b, &q::angular_momentum_a, &q::angular_momentum_b, &q::angular_velocity_a,
-        &q::angular_velocity_b, &q::kinetic_energy_before, &q::kinetic_energy_after,
-        &q::correction_a, &q::correction_b,
-    };
-    return all;
-}
-
-const QuantityInfo* catalogueInfo(std::string_view id)
-{
-    for (const QuantityInfo* info : quantityCatalogue()) {
-        if (id == info->id) return info;
-    }
-    return nullptr;
-}
-
 IndexKind indexKindOf(std::string_view id)
 {
-    if (id == "applied_force" || id == "application_point" || id == "lever_arm") return IndexKind::Force;
-    if (id == "applied_torque") return IndexKind::Torque;
-    if (id == "pairs_tested" || id == "pairs_overlapping") return IndexKind::None;
-    const QuantityInfo* info = catalogueInfo(id);
-    if (info == nullptr) return IndexKind::None;
-    switch (info->stage) {
-    case Stage::Probes: return IndexKind::Probe;
-    case Stage::Collision: return IndexKind::Contact;
-    case Stage::Correction: return IndexKind::Correction;
-    case Stage::Forces:
-    case Stage::Integration: return IndexKind::None;
-    }
-    return IndexKind::None;
+    const QuantityInfo* info = findQuantity(id);
+    return info != nullptr ? info->indexKind : IndexKind::None;
 }
 
 IndexKind indexKindFromName(const QString& name)
 {
-    if (name == QLatin1String("force")) return IndexKind::Force;
-    if (name == QLatin1String("torque")) return IndexKind::Torque;
-    if (name == QLatin1String("probe")) return IndexKind::Probe;
-    if (name == QLatin1String("contact")) return IndexKind::Contact;
-    if (name == QLatin1String("correction")) return IndexKind::Correction;
-    return IndexKind::None;
-}
-
-QString indexKindName(IndexKind kind)
-{
-    switch (kind) {
-    case IndexKind::Force: return QStringLiteral("force");
-    case IndexKind::Torque: return QStringLiteral("torque");
-    case IndexKind::Probe: return QStringLiteral("probe");
-    case IndexKind::Contact: return QStringLiteral("contact");
-    case IndexKind::Correction: return QStringLiteral("correction");
-    case IndexKind::None: break;
+    for (IndexKind k : {IndexKind::Force, IndexKind::Torque, IndexKind::Probe, IndexKind::Contact,
+                        IndexKind::RkStage, IndexKind::Correction}) {
+        if (name == QLatin1String(indexKindName(k))) return k;
     }
-    return QString();
+    return IndexKind::None;
 }
 
 int LookupContext::indexFor(IndexKind kind) const
@@ -84,6 +30,7 @@ int LookupContext::indexFor(IndexKind kind) const
     case IndexKind::Probe: return probe;
     case IndexKind::Contact: return contact;
     case IndexKind::Correction: return correction;
+    case IndexKind::RkStage: return stage;
     case IndexKind::None: break;
     }
     return -1;
@@ -97,6 +44,7 @@ void LookupContext::setIndex(IndexKind kind, int index)
     case IndexKind::Probe: probe = index; break;
     case IndexKind::Contact: contact = index; break;
     case IndexKind::Correction: correction = index; break;
+    case IndexKind::RkStage: stage = index; break;
     case IndexKind::None: break;
     }
 }
@@ -126,7 +74,7 @@ LookupResult lookupEntry(const StepTrace& trace, std::string_view id, const Look
         r.problem = QStringLiteral("not computed in this step");
     } else if (anyIndex) {
         r.problem = QStringLiteral("ambiguous: there are several, choose one with [i] or @foreach %1")
-                        .arg(indexKindName(kind));
+                        .arg(QLatin1String(indexKindName(kind)));
     } else {
         r.problem = QStringLiteral("ambiguous: several bodies have it, choose one with @name or @foreach body");
     }

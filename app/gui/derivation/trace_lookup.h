@@ -9,6 +9,7 @@
 //   context      the body and the loop indices a template block is expanded in
 #pragma once
 
+#include "physics/quantity_catalogue.h"
 #include "physics/trace.h"
 
 #include <QString>
@@ -18,20 +19,13 @@
 
 namespace rbw {
 
-enum class IndexKind { None, Force, Torque, Probe, Contact, Correction };
-
-// What the `index` of entries with this id counts (from the stage and the id).
+// What the `index` of entries with this id counts: the catalogue's index kind
+// (physics/quantity_catalogue.h); None for an id that is not in the catalogue.
 IndexKind indexKindOf(std::string_view id);
 
-// "force", "torque", "probe", "contact", "correction" <-> IndexKind; None if unknown.
+// The template names of the index kinds, "force", "torque", "probe", "contact",
+// "stage", "correction" (physics' indexKindName) -> IndexKind; None if unknown.
 IndexKind indexKindFromName(const QString& name);
-QString indexKindName(IndexKind kind);
-
-// Every quantity of physics/quantities.h, for symbols, formulas and units of ids that
-// are not in the current trace, and to reject misspelt ids in templates. Where an id
-// has two catalogue entries (force with and without gravity) the first is listed.
-const std::vector<const QuantityInfo*>& quantityCatalogue();
-const QuantityInfo* catalogueInfo(std::string_view id);   // nullptr if unknown
 
 struct LookupContext {
     int body = -1;   // -1: not fixed by the context
@@ -40,6 +34,7 @@ struct LookupContext {
     int probe = -1;
     int contact = -1;
     int correction = -1;
+    int stage = -1;   // RK stage i
 
     int indexFor(IndexKind kind) const;
     void setIndex(IndexKind kind, int index);

@@ -1,0 +1,34 @@
+// The checks that stop a run before a blown-up number reaches a view
+// (docs/stability.md, docs/architecture.md "Errors in layers"):
+//   finite_check   the first non-finite x, v, r, L or omega names step, body and quantity;
+//   energy_bound   before the integration: each movable body's T_n and its bound T_max;
+//   energy_check   after it: the first body with T_{n+1} > T_max (scene key energy_jump).
+#pragma once
+
+#include "physics/stages/stage.h"
+
+namespace rbw {
+
+class FiniteCheckStage final : public PipelineStep {
+public:
+    PipelineStage kind() const override { return PipelineStage::FiniteCheck; }
+    StepStatus run(StepContext& ctx) override;
+};
+
+class EnergyBoundStage final : public PipelineStep {
+public:
+    explicit EnergyBoundStage(const std::vector<MassProperties>& mass);
+    PipelineStage kind() const override { return PipelineStage::EnergyBound; }
+    StepStatus run(StepContext& ctx) override;
+
+private:
+    std::vector<double> maxInvInertia_;   // per body: largest entry of I0^-1 (diagonal) [1/(kg m^2)]
+};
+
+class EnergyCheckStage final : public PipelineStep {
+public:
+    PipelineStage kind() const override { return PipelineStage::EnergyCheck; }
+    StepStatus run(StepContext& ctx) override;
+};
+
+} // namespace rbw
