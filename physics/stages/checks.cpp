@@ -21,6 +21,29 @@ bool allStatesFinite(const std::vector<BodyState>& states)
     return std::isfinite(sum);
 }
 
+std::string joules(double x)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", x);
+    return buf;
+}
+
+// A blow-up of body b in this step: "simulation blew up in step k: <quantity> of body
+// "<name>" <what>. Try a smaller dt or another integrator."
+StepStatus blowUp(const StepContext& ctx, int b, const char* kind, const char* quantity, const std::string& what)
+{
+    StepStatus st;
+    st.ok = false;
+    st.kind = kind;
+    st.step = ctx.k;
+    st.body = b;
+    st.bodyName = ctx.scene.bodies[b].name;
+    st.quantity = quantity;
+    st.message = "simulation blew up in step " + std::to_string(st.step) + ": " + quantity + " of body \"" +
+                 st.bodyName + "\" " + what + ". Try a smaller dt or another integrator.";
+    return st;
+}
+
 // The first non-finite quantity, as a status that names step, body and quantity.
 StepStatus describeBlowUp(const StepContext& ctx)
 {
@@ -38,36 +61,19 @@ StepStatus describeBlowUp(const StepContext& ctx)
             {q::angular_velocity.id, isFinite(s.omega_W)},
         };
         for (const Field& f : fields) {
-            if (f.finite) continue;
-            StepStatus st;
-            st.ok = false;
-            st.kind = "non-finite";
-            st.step = ctx.k;
-            st.body = b;
-            st.bodyName = ctx.scene.bodies[b].name;
-            st.quantity = f.id;
-            st.message = "simulation blew up in step " + std::to_string(st.step) + ": " + f.id + " of body \"" +
-                         st.bodyName + "\" is not finite. Try a smaller dt or another integrator.";
-            return st;
+            if (!f.finite) return blowUp(ctx, b, "non-finite", f.id, "is not finite");
         }
     }
     return StepStatus::success();
 }
 
-std::string joules(double x)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", x);
-    return buf;
-}
-
 } // namespace
 
-StepStatus FiniteCheckStage::run(StepContext& ctx)
+void FiniteCheckStage::run(StepContext& ctx)
 {
     // Before the contact stages: a NaN pose makes every overlap test pass and would
     // spread the NaN into healthy bodies, and the report would blame them.
-    return allStatesFinite(ctx.states) ? StepStatus::success() : describeBlowUp(ctx);
+    if (!allStatesFinite(ctx.states)) ctx.status = describeBlowUp(ctx);
 }
 
 EnergyBoundStage::EnergyBoundStage(const std::vector<MassProperties>& mass)
@@ -79,7 +85,7 @@ EnergyBoundStage::EnergyBoundStage(const std::vector<MassProperties>& mass)
     }
 }
 
-StepStatus EnergyBoundStage::run(StepContext& ctx)
+void EnergyBoundStage::run(StepContext& ctx)
 {
     const double h = ctx.scene.dt;
     const double factor = ctx.scene.energyJumpFactor;
@@ -100,33 +106,25 @@ StepStatus EnergyBoundStage::run(StepContext& ctx)
         ctx.scratch.kineticBefore[b] = T_n;
         ctx.scratch.kineticBound[b] = factor * (T_n + W_n) + ctx.scene.energyJumpFloor;
     }
-    return StepStatus::success();
 }
 
-StepStatus EnergyCheckStage::run(StepContext& ctx)
+void EnergyCheckStage::run(StepContext& ctx)
 {
     for (int b = 0; b < static_cast<int>(ctx.states.size()); ++b) {
         if (!ctx.movable[b]) continue;
         const double T = kineticEnergy(ctx.mass[b], ctx.states[b]);
         // A bound that overflowed to infinity cannot be exceeded; T is finite here.
         if (!(T > ctx.scratch.kineticBound[b])) continue;
-        StepStatus st;
-        st.ok = false;
-        st.kind = "energy-jump";
-        st.step = ctx.k;
-        st.body = b;
-        st.bodyName = ctx.scene.bodies[b].name;
-        st.quantity = "kinetic_energy";
-        st.kineticBefore = ctx.scratch.kineticBefore[b];
-        st.kineticAfter = T;
-        st.kineticBound = ctx.scratch.kineticBound[b];
-        st.message = "simulation blew up in step " + std::to_string(st.step) + ": kinetic_energy of body \"" +
-                     st.bodyName + "\" jumped from " + joules(st.kineticBefore) + " J to " + joules(T) +
-                     " J in one step, above the bound " + joules(st.kineticBound) +
-                     " J. Try a smaller dt or another integrator.";
-        return st;
+        const double before = ctx.scratch.kineticBefore[b];
+        const double bound = ctx.scratch.kineticBound[b];
+        ctx.status = blowUp(ctx, b, "energy-jump", "kinetic_energy",
+                            "jumped from " + joules(before) + " J to " + joules(T) + " J in one step, above the bound " +
+                                joules(bound) + " J");
+        ctx.status.kineticBefore = before;
+        ctx.status.kineticAfter = T;
+        ctx.status.kineticBound = bound;
+        return;
     }
-    return StepStatus::success();
 }
 
 } // namespace rbw
