@@ -5,6 +5,7 @@
 // Expected numbers are hand derivations made elsewhere: Table 2.1's omega =
 // (-2.4, 4.918033, -1.764706) in tst_table21.cpp, lesson 3's J = 64/27 in
 // tst_collision_lessons.cpp, the plots' diagnostics against the rbw CLI.
+#include "app/gui/code_view.h"
 #include "app/gui/derivation/derivation_view.h"
 #include "app/gui/main_window.h"
 #include "app/gui/plots/body_plot_panel.h"
@@ -18,6 +19,9 @@
 #include <QDeadlineTimer>
 #include <QDialog>
 #include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -112,6 +116,7 @@ private slots:
     void everyLessonLoadsAndSteps_data();
     void everyLessonLoadsAndSteps();
     void lesson1OmegaInPanelAndDerivation();
+    void showCodeOfAQuantity();
     void modelIsConsistent();
     void stepBackRestoresExactly();
     void plotsFollowTheCli();
@@ -125,6 +130,7 @@ private slots:
     void parameterKeysChangeTheScene();
     void perBodyPlotsShowLesson9sIntegrators();
     void resetClearsTrace();
+    void playKeepsToRealTime();
 };
 
 void TestApp::initTestCase()
@@ -204,6 +210,73 @@ void TestApp::lesson1OmegaInPanelAndDerivation()
         const QString n = QString::fromLatin1(number);
         QVERIFY2(text.contains(n) || text.contains(QString(n).replace('-', QChar(0x2212))), number);
     }
+}
+
+void TestApp::showCodeOfAQuantity()
+{
+    // Lesson 1's omega row names the physics statement that computed it; Show code
+    // opens that file at that line, highlighted, with the equation comment above it
+    // on screen.
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openLesson("01-one-step"));
+    w.findChild<QAction*>("actionStep")->trigger();
+    auto* view = w.findChild<QTreeView*>("traceView");
+    const QAbstractItemModel* model = view->model();
+    const QModelIndex omega = findRow(model, "angular_velocity");
+    QVERIFY(omega.isValid());
+    view->setCurrentIndex(omega);
+
+    // The Source column: "file.cpp:line", with the path in the tree as its tooltip.
+    const QModelIndex sourceCell = model->index(omega.row(), TraceModel::SourceColumn, omega.parent());
+    QCOMPARE(model->headerData(TraceModel::SourceColumn, Qt::Horizontal).toString(), QString("Source"));
+    const QString source = sourceCell.data(Qt::ToolTipRole).toString();
+    static const QRegularExpression located(QStringLiteral(R"(^(physics/[a-z0-9_/]+\.cpp):(\d+)$)"));
+    const QRegularExpressionMatch m = located.match(source);
+    QVERIFY2(m.hasMatch(), qPrintable(source));
+    const QString file = m.captured(1);
+    const int line = m.captured(2).toInt();
+    QCOMPARE(sourceCell.data().toString(), QFileInfo(file).fileName() + ':' + QString::number(line));
+    QVERIFY(omega.data(Qt::ToolTipRole).toString().contains(source));   // also on the quantity's tooltip
+
+    // Show code is in the row's context menu and has a key.
+    auto* showCode = w.findChild<QAction*>("actionShowCode");
+    QVERIFY(showCode != nullptr);
+    QVERIFY(view->actions().contains(showCode));
+    QCOMPARE(view->contextMenuPolicy(), Qt::ActionsContextMenu);
+    QVERIFY(!showCode->shortcuts().isEmpty());
+    showCode->trigger();
+
+    CodeView* code = w.codeView();
+    QTRY_VERIFY(code->isVisible());
+    QCOMPARE(code->file(), file);
+    QCOMPARE(code->highlightedLine(), line);
+    QCOMPARE(code->headerText(), source);
+    // The highlighted line is the file's line, and it is code, not a blank or a comment.
+    QFile onDisk(QStringLiteral(RBW_SOURCE_DIR "/") + file);
+    QVERIFY(onDisk.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList lines = QString::fromUtf8(onDisk.readAll()).split('\n');
+    QVERIFY(line >= 1 && line <= lines.size());
+    QCOMPARE(code->lineText(line), lines[line - 1]);
+    const QString statement = code->lineText(line).trimmed();
+    QVERIFY2(!statement.isEmpty() && !statement.startsWith("//"), qPrintable(statement));
+    QVERIFY2(statement.contains("omega"), qPrintable(statement));   // the statement that records omega
+    // On screen: the line and the context above it, where the equation comment is.
+    QTRY_VERIFY(code->lineOnScreen(line));
+    QCOMPARE(code->firstVisibleLine(), std::max(1, line - CodeView::kContextLines));
+    bool commentAbove = false;
+    for (int k = std::max(1, line - CodeView::kContextLines); k < line; ++k) {
+        QVERIFY2(code->lineOnScreen(k), qPrintable(QString::number(k)));
+        commentAbove = commentAbove || code->lineText(k).trimmed().startsWith("//");
+    }
+    QVERIFY2(commentAbove, "the equation comment above the statement is on screen");
+
+    // Negative control: a group row has no code.
+    view->setCurrentIndex(omega.parent());
+    view->selectionModel()->clearSelection();
+    QVERIFY(!w.showCodeOfCurrentRow());
+    QCOMPARE(code->highlightedLine(), line);   // unchanged
 }
 
 void TestApp::modelIsConsistent()
@@ -524,6 +597,35 @@ void TestApp::resetClearsTrace()
     QCOMPARE(w.world()->stepIndex(), 0L);
     QCOMPARE(w.traceModel()->rowCount(), 0);
     QCOMPARE(w.plotPanel()->sampleCount(), 1);
+}
+
+void TestApp::playKeepsToRealTime()
+{
+    // Play at 1x real time (PlaybackClock): lesson 5 at h = 0.01 s takes about 100 steps
+    // per wall second, never more than real time allows; the table catches up on pause.
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openLesson("05-spinning"));
+    QCOMPARE(w.playbackSpeed(), 1.0);
+    QElapsedTimer wall;
+    wall.start();
+    w.findChild<QAction*>("actionPlay")->trigger();
+    QTest::qWait(600);
+    w.findChild<QAction*>("actionPlay")->trigger();   // pause
+    const double seconds = static_cast<double>(wall.elapsed()) * 1e-3;
+    const long steps = w.world()->stepIndex();
+    QVERIFY2(steps > 0, "Play took no step");
+    // Never ahead of real time: at most floor(t / h) steps, plus one of rounding.
+    QVERIFY2(steps <= static_cast<long>(seconds / 0.01) + 1,
+             qPrintable(QStringLiteral("%1 steps in %2 s").arg(steps).arg(seconds)));
+    // Paused: the table shows the last step.
+    QCOMPARE(w.traceModel()->trace().step, steps - 1);
+
+    // [ down to the slowest notch: one step per frame.
+    auto* slower = w.findChild<QAction*>("actionSlower");
+    for (int i = 0; i < 5; ++i) slower->trigger();
+    QCOMPARE(w.playbackSpeed(), 0.0);
 }
 
 int main(int argc, char* argv[])

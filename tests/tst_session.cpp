@@ -40,6 +40,8 @@ bool sameTrace(const StepTrace& a, const StepTrace& b)
         const TraceEntry& y = b.entries[i];
         if (x.info != y.info || x.body != y.body || x.index != y.index) return false;
         if (rbw::test::flatten(x.value) != rbw::test::flatten(y.value)) return false;
+        // The statement that computed the value travels with it through the history.
+        if (sourceText(x) != sourceText(y)) return false;
     }
     return a.diagnostics.total == b.diagnostics.total && a.diagnostics.P_W == b.diagnostics.P_W;
 }
@@ -54,6 +56,7 @@ private slots:
     void historyKeeps1000Steps();
     void parameterSwitchKeepsState();
     void badParameterIsRefused();
+    void parametersChangedOnlyForParameters();
     void dragPullsTowardsTarget_data();
     void dragPullsTowardsTarget();
     void pushActsForOneStep();
@@ -166,6 +169,32 @@ void TestSession::badParameterIsRefused()
     // The world is untouched by a refused change.
     QCOMPARE(s.world()->scene().dt, 2.0);
     QVERIFY(s.step());
+}
+
+void TestSession::parametersChangedOnlyForParameters()
+{
+    // The parameter bar follows parametersChanged: once per accepted switch, load or
+    // reset, and never for a step (the bar must not repaint at every frame of Play).
+    Session s;
+    QSignalSpy changed(&s, &Session::parametersChanged);
+    s.load(lessonScene("07-bounce/scene.json"));
+    QCOMPARE(changed.count(), 1);
+    QVERIFY(s.step());
+    QCOMPARE(s.advance(5, 1e9), 5);
+    QVERIFY(s.stepBack());
+    QCOMPARE(changed.count(), 1);
+    QVERIFY(s.setDt(0.01));
+    QVERIFY(s.setIntegrator("rk4"));
+    s.setGravityEnabled(false);
+    QVERIFY(s.setRestitution(0.5));
+    QVERIFY(s.setFriction(0.1));
+    QCOMPARE(changed.count(), 6);
+    // Negative control: a refused value changes nothing and says nothing.
+    QVERIFY(!s.setDt(-1.0));
+    QCOMPARE(changed.count(), 6);
+    s.reset();
+    QCOMPARE(changed.count(), 7);
+    QCOMPARE(s.world()->scene().dt, 0.01);   // reset keeps the student's parameters
 }
 
 void TestSession::dragPullsTowardsTarget_data()

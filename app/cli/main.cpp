@@ -8,12 +8,15 @@
 #include "app/core/study_csv.h"
 #include "physics/integrator_registry.h"
 #include "physics/lab/study.h"
+#include "physics/quantity_catalogue.h"
 #include "physics/world.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
+#include <QJsonArray>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QSaveFile>
 #include <QTextStream>
 
@@ -212,6 +215,52 @@ int listIntegrators()
     return kExitOk;
 }
 
+// rbw quantities [--format json|csv]: the quantity catalogue, one row per formula.
+int listQuantities(const QCommandLineParser& parser)
+{
+    const QString format = parser.isSet("format") ? parser.value("format") : QStringLiteral("text");
+    if (format == "json") {
+        QJsonArray rows;
+        for (const rbw::QuantityInfo& q : rbw::quantityCatalogue()) {
+            rows.append(QJsonObject{
+                {"key", q.key},
+                {"id", q.id},
+                {"stage", rbw::stageName(q.stage)},
+                {"index_kind", rbw::indexKindName(q.indexKind)},
+                {"symbol", q.symbol},
+                {"text", QString::fromUtf8(q.text)},
+                {"formula", q.formula},
+                {"frame", rbw::frameName(q.frame)},
+                {"unit", QString::fromUtf8(q.unit)},
+            });
+        }
+        out() << QJsonDocument(rows).toJson(QJsonDocument::Indented);
+    } else if (format == "csv") {
+        out() << "key,id,stage,index_kind,frame,unit,formula\n";
+        for (const rbw::QuantityInfo& q : rbw::quantityCatalogue()) {
+            QString formula = QString::fromUtf8(q.formula);
+            formula.replace('"', QStringLiteral("\"\""));
+            out() << q.key << ',' << q.id << ',' << rbw::stageName(q.stage) << ',' << rbw::indexKindName(q.indexKind)
+                  << ',' << rbw::frameName(q.frame) << ',' << QString::fromUtf8(q.unit) << ",\"" << formula << "\"\n";
+        }
+    } else if (format == "text") {
+        for (const rbw::QuantityInfo& q : rbw::quantityCatalogue()) {
+            const QString where = QString::fromLatin1(rbw::stageName(q.stage)) +
+                                  (q.indexKind != rbw::IndexKind::None ? QStringLiteral(", per ") +
+                                                                             QLatin1String(rbw::indexKindName(q.indexKind))
+                                                                       : QString());
+            out() << QString::fromLatin1(q.id).leftJustified(28) << ' ' << QString::fromUtf8(q.text).leftJustified(12)
+                  << ' ' << QString::fromUtf8(q.unit).leftJustified(10) << ' ' << where;
+            if (std::string_view(q.key) != q.id) out() << "  (" << q.key << ')';
+            out() << '\n';
+        }
+    } else {
+        return badInput("--format: must be json, csv or text for quantities, got \"" + format + "\"");
+    }
+    out().flush();
+    return kExitOk;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -227,6 +276,7 @@ int main(int argc, char* argv[])
         "  run SCENE.json    run a scene and print its state, diagnostics and step trace\n"
         "  lessons           list the lessons with their one-line descriptions\n"
         "  integrators       list the integrators a scene can choose\n"
+        "  quantities        list every traced quantity: id, symbol, unit, stage (--format json|csv)\n"
         "  study SCENE.json  every integrator at every dt against the scene's exact answer (CSV)\n\n"
         "Exit status: 0 success, 2 bad input (the message names the file, field and reason),\n"
         "3 the simulation blew up (the message names the step, body and quantity).\n\n"
@@ -236,7 +286,7 @@ int main(int argc, char* argv[])
         "  rbw study lessons/10-accuracy-lab/scene.json --integrators explicit-euler,rk4 --dt 0.1,0.01");
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument("command", "run, study, lessons or integrators");
+    parser.addPositionalArgument("command", "run, study, lessons, integrators or quantities");
     parser.addPositionalArgument("scene", "the scene file, for run and study", "[SCENE.json]");
     parser.addOptions({
         {"steps", "Number of steps to take (default: the scene's \"steps\").", "N"},
@@ -273,5 +323,6 @@ int main(int argc, char* argv[])
     }
     if (command == "lessons" && args.size() == 1) return listLessons();
     if (command == "integrators" && args.size() == 1) return listIntegrators();
+    if (command == "quantities" && args.size() == 1) return listQuantities(parser);
     return badInput("unknown command \"" + args.join(' ') + "\" (see rbw --help)");
 }

@@ -12,7 +12,7 @@ CompactTrace::CompactTrace(const StepTrace& trace)
     values_.reserve(trace.entries.size() * 4);
     for (const TraceEntry& e : trace.entries) {
         assert(e.index >= std::numeric_limits<std::int16_t>::min() && e.index <= std::numeric_limits<std::int16_t>::max());
-        headers_.push_back(Header{e.info, e.body, static_cast<std::int16_t>(e.index),
+        headers_.push_back(Header{e.info, e.where, e.body, static_cast<std::int16_t>(e.index),
                                   static_cast<std::uint8_t>(e.value.index())});
         switch (e.value.index()) {
         case 0:
@@ -70,7 +70,7 @@ StepTrace CompactTrace::unpack() const
             v += 9;
             break;
         }
-        t.entries.push_back(TraceEntry{h.info, h.body, h.index, value});
+        t.entries.push_back(TraceEntry{h.info, h.body, h.index, value, h.where});
     }
     return t;
 }

@@ -29,6 +29,7 @@ void Session::reset()
     history_.push(HistoryEntry{world_->snapshot(), CompactTrace{}, false});
     hasCurrent_ = false;
     emit sessionReset();
+    emit parametersChanged();
     emit stateChanged();
 }
 
@@ -61,6 +62,7 @@ bool Session::rebuild(SceneDef edited, QString* error)
     } else {
         world_ = std::make_unique<World>(edited_);
     }
+    emit parametersChanged();
     emit stateChanged();
     return true;
 }

@@ -89,6 +89,10 @@ signals:
     void rewound(long stepIndex);
     // The state or the parameters changed (after a step, a batch, step back, a switch).
     void stateChanged();
+    // The scene's parameters changed (a switch above, a new lesson or reset): the
+    // controls that show h, the integrator, gravity, c and mu follow. Emitted before
+    // the stateChanged of the same change; never for a step.
+    void parametersChanged();
     // The run stopped: a non-finite value or an energy jump; the message says where.
     void blownUp(const QString& message);
 

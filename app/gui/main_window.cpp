@@ -1,34 +1,31 @@
 #include "app/gui/main_window.h"
 
+#include "app/core/focus_filter.h"
 #include "app/core/scene_loader.h"
 #include "app/gui/accuracy/accuracy_panel.h"
+#include "app/gui/code_view.h"
 #include "app/gui/derivation/derivation_builder.h"
 #include "app/gui/derivation/derivation_view.h"
+#include "app/gui/parameter_bar.h"
 #include "app/gui/plots/body_plot_panel.h"
 #include "app/gui/plots/plot_panel.h"
 #include "app/gui/trace_model.h"
 #include "app/gui/view/scene_view.h"
 #include "app/gui/view/view_snapshot.h"
-#include "physics/integrator_registry.h"
 
 #include <QAction>
 #include <QApplication>
-#include <QCheckBox>
 #include <QClipboard>
 #include <QCloseEvent>
-#include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDockWidget>
-#include <QDoubleSpinBox>
-#include <QDoubleValidator>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QKeySequence>
 #include <QLabel>
-#include <QLineEdit>
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -43,55 +40,16 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 
 namespace rbw {
 
 namespace {
-
-// Wall-clock budget of one play tick: the GUI stays responsive at any speed.
-constexpr double kTickBudgetMs = 12.0;
 
 QString plainText(const QAction* a)
 {
     QString t = a->text();
     t.remove('&');
     return t;
-}
-
-// Scenes with more bodies than this write out one body (and its contacts) at a time.
-constexpr int kDerivationAllBodiesMax = 6;
-// While playing, the quantities table is refreshed at most this often.
-constexpr qint64 kTableIntervalMs = 250;
-
-// The part of a trace about one body: its own rows, the world-level rows, and the
-// contacts it takes part in (renumbered 0, 1, ... in their order). A selection of
-// the recorded entries, nothing recomputed.
-StepTrace focusTrace(const StepTrace& trace, int body)
-{
-    StepTrace out;
-    out.step = trace.step;
-    out.time = trace.time;
-    out.diagnostics = trace.diagnostics;
-    std::vector<int> renumber(trace.contacts.size(), -1);
-    for (size_t c = 0; c < trace.contacts.size(); ++c) {
-        const ContactHeader& h = trace.contacts[c];
-        if (h.bodyA == body || h.bodyB == body) {
-            renumber[c] = static_cast<int>(out.contacts.size());
-            out.contacts.push_back(h);
-        }
-    }
-    for (const TraceEntry& e : trace.entries) {
-        if (e.info->stage == Stage::Collision && e.index >= 0) {
-            if (e.index < static_cast<int>(renumber.size()) && renumber[e.index] >= 0) {
-                out.entries.push_back(TraceEntry{e.info, e.body, renumber[e.index], e.value});
-            }
-        } else if (e.body == body || e.body < 0) {
-            out.entries.push_back(e);
-        }
-    }
-    return out;
 }
 
 // The page shown before the first step: nothing is computed yet.
@@ -132,15 +90,19 @@ MainWindow::MainWindow(QWidget* parent)
     centreLayout->addWidget(sceneView_, 1);
     setCentralWidget(centre);
 
+    parameterBar_ = new ParameterBar(&session_, this);
+    connect(parameterBar_, &ParameterBar::speedChanged, this, [this](double speed) { clock_.setSpeed(speed); });
+    connect(parameterBar_, &ParameterBar::messageRequested, statusBar(), &QStatusBar::showMessage);
+    clock_.setSpeed(parameterBar_->speed());
     createDocks();
     createActions();
-    createParameterBar();
+    addToolBar(parameterBar_);   // after the simulation bar
 
     statusLabel_ = new QLabel;
     statusLabel_->setObjectName("statusLabel");
     statusBar()->addPermanentWidget(statusLabel_, 1);
 
-    playTimer_->setInterval(16);   // ~60 Hz; each tick takes bounded time (kTickBudgetMs)
+    playTimer_->setInterval(PlaybackClock::kTickIntervalMs);   // each tick takes bounded time
     connect(playTimer_, &QTimer::timeout, this, &MainWindow::onPlayTick);
 
     connect(&session_, &Session::sessionReset, this, &MainWindow::onSessionReset);
@@ -168,7 +130,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     resize(1360, 740);
     restoreLayout();
-    tableClock_.start();
+    clock_.panelsRefreshed();
 }
 
 MainWindow::~MainWindow() = default;
@@ -200,13 +162,9 @@ void MainWindow::createActions()
     resetAction_ = addShortcutAction(tr("&Reset"), "actionReset", {QKeySequence(Qt::Key_R)});
     connect(resetAction_, &QAction::triggered, this, &MainWindow::resetLesson);
     auto* slower = addShortcutAction(tr("Play s&lower"), "actionSlower", {QKeySequence(Qt::Key_BracketLeft)});
-    connect(slower, &QAction::triggered, this, [this] {
-        speedBox_->setCurrentIndex(std::max(0, speedBox_->currentIndex() - 1));
-    });
+    connect(slower, &QAction::triggered, parameterBar_, &ParameterBar::slower);
     auto* faster = addShortcutAction(tr("Play &faster"), "actionFaster", {QKeySequence(Qt::Key_BracketRight)});
-    connect(faster, &QAction::triggered, this, [this] {
-        speedBox_->setCurrentIndex(std::min(speedBox_->count() - 1, speedBox_->currentIndex() + 1));
-    });
+    connect(faster, &QAction::triggered, parameterBar_, &ParameterBar::faster);
     gravityAction_ = addShortcutAction(tr("&Gravity on/off"), "actionGravity", {QKeySequence(Qt::Key_G)});
     connect(gravityAction_, &QAction::triggered, this, [this] {
         if (session_.isLoaded()) session_.setGravityEnabled(!session_.gravityEnabled());
@@ -224,23 +182,23 @@ void MainWindow::createActions()
 
     // Keys for the parameter bar's controls.
     auto* halveDt = addShortcutAction(tr("Halve h"), "actionHalveDt", {QKeySequence(Qt::Key_H)});
-    connect(halveDt, &QAction::triggered, this, [this] { scaleDt(0.5); });
+    connect(halveDt, &QAction::triggered, parameterBar_, [this] { parameterBar_->scaleDt(0.5); });
     auto* doubleDt = addShortcutAction(tr("Double h"), "actionDoubleDt", {QKeySequence(Qt::SHIFT | Qt::Key_H)});
-    connect(doubleDt, &QAction::triggered, this, [this] { scaleDt(2.0); });
+    connect(doubleDt, &QAction::triggered, parameterBar_, [this] { parameterBar_->scaleDt(2.0); });
     auto* nextIntegrator = addShortcutAction(tr("Next integrator"), "actionNextIntegrator", {QKeySequence(Qt::Key_I)});
-    connect(nextIntegrator, &QAction::triggered, this, [this] { cycleIntegrator(+1); });
+    connect(nextIntegrator, &QAction::triggered, parameterBar_, [this] { parameterBar_->cycleIntegrator(+1); });
     auto* previousIntegrator = addShortcutAction(tr("Previous integrator"), "actionPreviousIntegrator",
                                                  {QKeySequence(Qt::SHIFT | Qt::Key_I)});
-    connect(previousIntegrator, &QAction::triggered, this, [this] { cycleIntegrator(-1); });
+    connect(previousIntegrator, &QAction::triggered, parameterBar_, [this] { parameterBar_->cycleIntegrator(-1); });
     auto* moreC = addShortcutAction(tr("Restitution c + 0.05"), "actionMoreRestitution", {QKeySequence(Qt::Key_C)});
-    connect(moreC, &QAction::triggered, this, [this] { restitutionBox_->stepUp(); });
+    connect(moreC, &QAction::triggered, parameterBar_, [this] { parameterBar_->stepRestitution(+1); });
     auto* lessC = addShortcutAction(tr("Restitution c − 0.05"), "actionLessRestitution",
                                     {QKeySequence(Qt::SHIFT | Qt::Key_C)});
-    connect(lessC, &QAction::triggered, this, [this] { restitutionBox_->stepDown(); });
+    connect(lessC, &QAction::triggered, parameterBar_, [this] { parameterBar_->stepRestitution(-1); });
     auto* moreMu = addShortcutAction(tr("Friction μ + 0.05"), "actionMoreFriction", {QKeySequence(Qt::Key_U)});
-    connect(moreMu, &QAction::triggered, this, [this] { frictionBox_->stepUp(); });
+    connect(moreMu, &QAction::triggered, parameterBar_, [this] { parameterBar_->stepFriction(+1); });
     auto* lessMu = addShortcutAction(tr("Friction μ − 0.05"), "actionLessFriction", {QKeySequence(Qt::SHIFT | Qt::Key_U)});
-    connect(lessMu, &QAction::triggered, this, [this] { frictionBox_->stepDown(); });
+    connect(lessMu, &QAction::triggered, parameterBar_, [this] { parameterBar_->stepFriction(-1); });
     parameterActions_ = {halveDt, doubleDt, nextIntegrator, previousIntegrator, moreC, lessC, moreMu, lessMu};
 
     trailsAction_ = addShortcutAction(tr("Motion &trails"), "actionTrails", {QKeySequence(Qt::Key_T)});
@@ -267,6 +225,11 @@ void MainWindow::createActions()
     auto* copyLatexAction = addShortcutAction(tr("Copy row as &LaTeX"), "actionCopyLatex",
                                               {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C)});
     connect(copyLatexAction, &QAction::triggered, this, [this] { copySelection(true); });
+    auto* showCodeAction = addShortcutAction(tr("Show c&ode of row"), "actionShowCode", {QKeySequence(Qt::Key_F2)});
+    connect(showCodeAction, &QAction::triggered, this, &MainWindow::showCodeOfCurrentRow);
+    // The quantities table's context menu: the row's code and copies.
+    traceView_->setContextMenuPolicy(Qt::ActionsContextMenu);
+    traceView_->addActions({showCodeAction, copyAction, copyLatexAction});
 
     auto* exportHtml = addShortcutAction(tr("Export derivation as &HTML…"), "actionExportHtml",
                                          {QKeySequence(Qt::CTRL | Qt::Key_E)});
@@ -297,6 +260,8 @@ void MainWindow::createActions()
     fileMenu->addAction(quitAction);
     QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
     editMenu->addActions({copyAction, copyLatexAction});
+    editMenu->addSeparator();
+    editMenu->addAction(showCodeAction);
     QMenu* simMenu = menuBar()->addMenu(tr("&Simulation"));
     simMenu->addActions({stepBackAction_, stepAction_, playAction_, resetAction_, slower, faster});
     simMenu->addSeparator();
@@ -322,22 +287,6 @@ void MainWindow::createActions()
     bar->addActions({stepBackAction_, stepAction_, playAction_, resetAction_});
 }
 
-void MainWindow::scaleDt(double factor)
-{
-    if (!session_.isLoaded()) return;
-    QString error;
-    if (!session_.setDt(session_.world()->scene().dt * factor, &error)) statusBar()->showMessage(error, 5000);
-}
-
-void MainWindow::cycleIntegrator(int direction)
-{
-    if (!integratorBox_->isEnabled() || integratorBox_->count() == 0) return;
-    const int n = integratorBox_->count();
-    const int next = (integratorBox_->currentIndex() + direction + n) % n;
-    QString error;
-    if (!session_.setIntegrator(integratorBox_->itemText(next), &error)) statusBar()->showMessage(error, 5000);
-}
-
 void MainWindow::addPushAction(const QString& text, const QKeySequence& key, const Vec3& direction)
 {
     QAction* a = addShortcutAction(text, QStringLiteral("actionPush%1").arg(pushActions_.size()), {key});
@@ -345,100 +294,6 @@ void MainWindow::addPushAction(const QString& text, const QKeySequence& key, con
         if (session_.push(direction)) statusBar()->showMessage(tr("Push queued for the next step"), 1500);
     });
     pushActions_ << a;
-}
-
-void MainWindow::createParameterBar()
-{
-    QToolBar* bar = addToolBar(tr("Parameters"));
-    bar->setObjectName("parameterToolBar");
-
-    speedBox_ = new QComboBox;
-    speedBox_->setObjectName("speedBox");
-    speedBox_->setToolTip(tr("Playback speed ([ slower, ] faster)"));
-    // Simulated seconds per wall-clock second; 0: one step per frame; -1: as fast as possible.
-    const QList<QPair<QString, double>> speeds = {
-        {tr("1 step/frame"), 0.0}, {tr("¼× real time"), 0.25}, {tr("½× real time"), 0.5}, {tr("1× real time"), 1.0},
-        {tr("2× real time"), 2.0}, {tr("5× real time"), 5.0},  {tr("10× real time"), 10.0}, {tr("as fast as possible"), -1.0}};
-    for (const auto& [label, value] : speeds) speedBox_->addItem(label, value);
-    speedBox_->setCurrentIndex(3);
-    speed_ = 1.0;
-    connect(speedBox_, &QComboBox::currentIndexChanged, this, [this](int i) {
-        speed_ = speedBox_->itemData(i).toDouble();
-        simDebt_ = 0.0;
-    });
-    bar->addWidget(new QLabel(tr(" Speed ")));
-    bar->addWidget(speedBox_);
-
-    dtBox_ = new QComboBox;
-    dtBox_->setObjectName("dtBox");
-    dtBox_->setEditable(true);
-    dtBox_->setToolTip(tr("Time step h in seconds (type a value and press Enter)"));
-    for (const char* h : {"2", "1", "0.1", "0.05", "0.02", "0.01", "0.005", "0.001", "0.0001"}) dtBox_->addItem(h);
-    auto* validator = new QDoubleValidator(1e-9, 1e3, 12, dtBox_);
-    validator->setNotation(QDoubleValidator::ScientificNotation);
-    dtBox_->setValidator(validator);
-    dtBox_->setMinimumContentsLength(7);
-    connect(dtBox_->lineEdit(), &QLineEdit::editingFinished, this, [this] {
-        if (syncing_ || !session_.isLoaded()) return;
-        bool ok = false;
-        const double h = dtBox_->currentText().toDouble(&ok);
-        QString error;
-        if (!ok || !session_.setDt(h, &error)) {
-            statusBar()->showMessage(tr("h not changed: %1").arg(ok ? error : tr("not a number")), 5000);
-            syncParameterControls();
-        }
-    });
-    connect(dtBox_, &QComboBox::activated, this, [this](int) { dtBox_->lineEdit()->editingFinished(); });
-    bar->addWidget(new QLabel(tr("  h ")));
-    bar->addWidget(dtBox_);
-
-    integratorBox_ = new QComboBox;
-    integratorBox_->setObjectName("integratorBox");
-    for (const IntegratorInfo& info : integratorCatalogue()) {
-        integratorBox_->addItem(QString::fromLatin1(info.name));
-        integratorBox_->setItemData(integratorBox_->count() - 1, QString::fromUtf8(info.summary), Qt::ToolTipRole);
-    }
-    connect(integratorBox_, &QComboBox::activated, this, [this](int i) {
-        QString error;
-        if (!session_.setIntegrator(integratorBox_->itemText(i), &error)) {
-            statusBar()->showMessage(error, 5000);
-            syncParameterControls();
-        }
-    });
-    bar->addWidget(new QLabel(tr("  Integrator ")));
-    bar->addWidget(integratorBox_);
-
-    gravityBox_ = new QCheckBox(tr("Gravity"));
-    gravityBox_->setObjectName("gravityBox");
-    gravityBox_->setToolTip(tr("Gravity on/off (G)"));
-    connect(gravityBox_, &QCheckBox::toggled, this, [this](bool on) {
-        if (!syncing_ && session_.isLoaded()) session_.setGravityEnabled(on);
-    });
-    bar->addWidget(new QLabel("  "));
-    bar->addWidget(gravityBox_);
-
-    auto coefficientBox = [&](const QString& name, const QString& label, const QString& tip, double max) {
-        auto* box = new QDoubleSpinBox;
-        box->setObjectName(name);
-        box->setRange(0.0, max);
-        box->setSingleStep(0.05);
-        box->setDecimals(2);
-        box->setToolTip(tip);
-        box->setKeyboardTracking(false);
-        bar->addWidget(new QLabel(label));
-        bar->addWidget(box);
-        return box;
-    };
-    restitutionBox_ = coefficientBox("restitutionBox", tr("  c "), tr("Coefficient of restitution c (0 plastic, 1 elastic)"), 1.0);
-    connect(restitutionBox_, &QDoubleSpinBox::valueChanged, this, [this](double c) {
-        QString error;
-        if (!syncing_ && session_.isLoaded() && !session_.setRestitution(c, &error)) statusBar()->showMessage(error, 5000);
-    });
-    frictionBox_ = coefficientBox("frictionBox", tr("  μ "), tr("Coulomb friction coefficient μ"), 5.0);
-    connect(frictionBox_, &QDoubleSpinBox::valueChanged, this, [this](double mu) {
-        QString error;
-        if (!syncing_ && session_.isLoaded() && !session_.setFriction(mu, &error)) statusBar()->showMessage(error, 5000);
-    });
 }
 
 void MainWindow::createDocks()
@@ -520,6 +375,16 @@ void MainWindow::createDocks()
     bodyPlotDock->setWidget(bodyPlotPanel_);
     addDockWidget(Qt::BottomDockWidgetArea, bodyPlotDock);
     tabifyDockWidget(plotDock, bodyPlotDock);
+
+    // The physics statement behind a row of the table (Show code), beside the plots so
+    // that the table and the code are on screen together.
+    codeView_ = new CodeView;
+    codeView_->setObjectName("codeView");
+    codeDock_ = new QDockWidget(tr("Code"), this);
+    codeDock_->setObjectName("codeDock");
+    codeDock_->setWidget(codeView_);
+    addDockWidget(Qt::BottomDockWidgetArea, codeDock_);
+    tabifyDockWidget(bodyPlotDock, codeDock_);
     plotDock->raise();
 
     accuracyPanel_ = new AccuracyPanel;
@@ -642,7 +507,7 @@ void MainWindow::onStateChanged()
     sceneView_->setSnapshot(makeViewSnapshot(*world, trace));
     sceneView_->setSpring(session_.springSegment());
     const bool playing = playTimer_->isActive();
-    const bool panelsDue = !playing || tableClock_.elapsed() >= kTableIntervalMs;
+    const bool panelsDue = clock_.panelsDue(playing);
     if (traceDirty_ && panelsDue) {
         // A new step (or step back, or reset): the table shows its trace.
         if (trace != nullptr) traceModel_->setTrace(*trace, world->scene());
@@ -651,13 +516,14 @@ void MainWindow::onStateChanged()
     }
     // The typeset page follows when the run pauses: typesetting at every frame would
     // cost more than the step itself.
-    if (derivationDirty_ && !playing) refreshDerivation();
-    // While playing, the controls and the status line change only at the table's
+    if (derivationDirty_ && PlaybackClock::derivationDue(playing)) refreshDerivation();
+    // While playing, the actions and the status line change only at the table's
     // pace: every repainted widget is re-uploaded for the GL composition of the window.
+    // (The parameter bar follows the session's parametersChanged, which a step never emits.)
     if (panelsDue) {
-        syncParameterControls();
+        updateActions();
         updateStatus();
-        tableClock_.restart();
+        clock_.panelsRefreshed();
     }
 }
 
@@ -670,26 +536,10 @@ void MainWindow::refreshDerivation()
         derivationHtml_ = introPage(currentLesson_);
     } else {
         const QString lessonDir = QFileInfo(currentLesson_.scenePath).absolutePath();
-        const int n = static_cast<int>(scene.bodies.size());
-        if (n <= kDerivationAllBodiesMax) {
-            derivationHtml_ = buildLessonDerivation(*trace, scene, lessonDir).html;
-        } else {
-            // Many bodies: one at a time, the one last grabbed (else the first movable).
-            int focus = focusBody_;
-            if (focus < 0 || focus >= n) {
-                focus = 0;
-                while (focus < n - 1 && scene.bodies[focus].fixed) ++focus;
-            }
-            derivationHtml_ = buildLessonDerivation(focusTrace(*trace, focus), scene, lessonDir).html;
-            const QString note =
-                tr("<p class=\"focus-note\" style=\"background:#fff4d6;padding:6px 10px;border-radius:4px\">"
-                   "This scene has %1 bodies: the page writes out <b>%2</b> and its contacts. "
-                   "Press on another box in the 3D view to follow it.</p>")
-                    .arg(n)
-                    .arg(QString::fromStdString(scene.bodies[focus].name).toHtmlEscaped());
-            derivationHtml_.replace(QLatin1String("<main class=\"derivation\">"),
-                                    QLatin1String("<main class=\"derivation\">") + note);
-        }
+        // Many bodies: the page writes out one, the one last grabbed (else the first movable).
+        DerivationOptions options;
+        options.focusBody = derivationFocusBody(scene, focusBody_);
+        derivationHtml_ = buildLessonDerivation(*trace, scene, lessonDir, options).html;
     }
     derivationView_->showStep(derivationHtml_);
     derivationDirty_ = false;
@@ -726,8 +576,7 @@ void MainWindow::setPlaying(bool playing)
         return;
     }
     if (playing) {
-        simDebt_ = 0.0;
-        playClock_.start();
+        clock_.start();
         playTimer_->start();
     } else {
         playTimer_->stop();
@@ -741,22 +590,11 @@ void MainWindow::onPlayTick()
 {
     const World* world = session_.world();
     if (world == nullptr) return;
-    // Wall time since the last tick, capped so a stall does not trigger a burst.
-    const double wall = std::min(0.1, static_cast<double>(playClock_.restart()) * 1e-3);
     const double h = world->scene().dt;
-    int wanted = 1;
-    if (speed_ < 0.0) {
-        wanted = std::numeric_limits<int>::max();
-    } else if (speed_ > 0.0) {
-        simDebt_ += speed_ * wall;
-        wanted = static_cast<int>(std::floor(simDebt_ / h));
-        if (wanted == 0) return;
-    }
-    const int taken = session_.advance(wanted, kTickBudgetMs);
-    if (speed_ > 0.0) {
-        simDebt_ -= taken * h;
-        if (taken < wanted) simDebt_ = std::min(simDebt_, h);   // cannot keep up: drop the backlog
-    }
+    const int due = clock_.stepsDue(h);
+    if (due == 0) return;   // less than one step owed to real time yet
+    const int taken = session_.advance(due, clock_.budgetMs());
+    clock_.stepsTaken(due, taken, h);
 }
 
 void MainWindow::copySelection(bool asLatex)
@@ -767,6 +605,26 @@ void MainWindow::copySelection(bool asLatex)
         lines << (asLatex ? traceModel_->data(index, TraceModel::LatexRole).toString() : traceModel_->rowText(index));
     }
     if (!lines.isEmpty()) QApplication::clipboard()->setText(lines.join('\n'));
+}
+
+bool MainWindow::showCodeOfCurrentRow()
+{
+    QModelIndex index = traceView_->currentIndex();
+    if (traceModel_->entryAt(index) == nullptr) {
+        const QModelIndexList selected = traceView_->selectionModel()->selectedRows();
+        index = selected.isEmpty() ? QModelIndex() : selected.first();
+    }
+    const QString file = index.data(TraceModel::SourceFileRole).toString();
+    if (traceModel_->entryAt(index) == nullptr || file.isEmpty()) {
+        statusBar()->showMessage(tr("Select a quantity in the table to see the code that computed it"), 3000);
+        return false;
+    }
+    const int line = index.data(TraceModel::SourceLineRole).toInt();
+    const bool shown = codeView_->showSource(file, line);
+    codeDock_->show();
+    codeDock_->raise();
+    if (!shown) statusBar()->showMessage(codeView_->headerText(), 5000);
+    return shown;
 }
 
 void MainWindow::showKeys()
@@ -821,31 +679,13 @@ void MainWindow::exportDerivationPdf()
     if (!path.isEmpty()) derivationView_->exportPdf(path);
 }
 
-void MainWindow::syncParameterControls()
+void MainWindow::updateActions()
 {
     const World* world = session_.world();
     if (world == nullptr) return;
-    syncing_ = true;
-    const SceneDef& scene = world->scene();
-    if (!dtBox_->lineEdit()->hasFocus()) dtBox_->setEditText(QString::number(scene.dt, 'g', 10));
-    integratorBox_->setCurrentText(QString::fromStdString(scene.integrator));
-    // A lesson that compares integrators side by side sets one per body: the box
-    // would change only the bodies without their own.
-    const bool perBody = std::any_of(scene.bodies.begin(), scene.bodies.end(),
-                                     [](const BodyDef& b) { return !b.integrator.empty(); });
-    integratorBox_->setEnabled(!perBody);
-    integratorBox_->setToolTip(perBody ? tr("This lesson sets an integrator for each body (see the lesson text)")
-                                       : tr("The integrator of every body"));
-    gravityBox_->setChecked(scene.hasGravity());
-    const bool collides = world->runsCollisionStage();
-    restitutionBox_->setEnabled(collides);
-    frictionBox_->setEnabled(collides);
-    restitutionBox_->setValue(scene.restitution);
-    frictionBox_->setValue(scene.friction);
     torqueAction_->setEnabled(world->hasSwitchableTorque());
-    for (QAction* a : pushActions_) a->setEnabled(scene.push.body >= 0);
+    for (QAction* a : pushActions_) a->setEnabled(world->scene().push.body >= 0);
     stepBackAction_->setEnabled(session_.history().stepsBackAvailable() > 0);
-    syncing_ = false;
 }
 
 void MainWindow::updateStatus()

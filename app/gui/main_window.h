@@ -2,21 +2,21 @@
 // the lesson list and text, the quantities of the current step (a TraceModel over
 // the trace), the typeset derivation and the energy and momentum plots. A Session
 // owns the world, its history and the interaction; this window only wires the
-// controls to the session and the session's signals to the views.
+// controls to the session and the session's signals to the views. What is not wiring
+// lives elsewhere: the pacing of Play in PlaybackClock (app/core), the derivation's
+// focus on one body of many in focus_filter (app/core), the parameter controls in
+// ParameterBar, the code behind a quantity in CodeView.
 #pragma once
 
 #include "app/core/lesson_catalogue.h"
+#include "app/core/playback_clock.h"
 #include "app/core/session.h"
 
-#include <QElapsedTimer>
 #include <QList>
 #include <QMainWindow>
 
 class QAction;
-class QCheckBox;
-class QComboBox;
 class QDockWidget;
-class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
 class QTextBrowser;
@@ -27,7 +27,9 @@ namespace rbw {
 
 class AccuracyPanel;
 class BodyPlotPanel;
+class CodeView;
 class DerivationView;
+class ParameterBar;
 class PlotPanel;
 class SceneView;
 class TraceModel;
@@ -55,7 +57,9 @@ public:
     // Every action that has a keyboard shortcut, in menu order (the Help → Keys table).
     QList<QAction*> shortcutActions() const;
     // Steps per second of wall time while playing: 0 means one step per frame.
-    double playbackSpeed() const { return speed_; }
+    double playbackSpeed() const { return clock_.speed(); }
+    ParameterBar* parameterBar() const { return parameterBar_; }
+    CodeView* codeView() const { return codeView_; }
 
 public slots:
     void stepOnce();
@@ -63,6 +67,9 @@ public slots:
     void setPlaying(bool playing);
     void resetLesson();
     void copySelection(bool asLatex);
+    // Opens the code view at the physics statement that computed the current row of
+    // the quantities table. False (with a note in the status bar) for a group row.
+    bool showCodeOfCurrentRow();
     void showKeys();
     // Refreshes the derivation page now, even while playing.
     void refreshDerivation();
@@ -73,7 +80,6 @@ protected:
 private:
     void createActions();
     void createDocks();
-    void createParameterBar();
     void restoreLayout();
     void onLessonRowChanged(int row);
     void onSessionReset();
@@ -82,11 +88,9 @@ private:
     void onBlownUp(const QString& message);
     void onPlayTick();
     void updateStatus();
-    void syncParameterControls();
+    void updateActions();
     void exportDerivationHtml();
     void exportDerivationPdf();
-    void scaleDt(double factor);
-    void cycleIntegrator(int direction);
     void addPushAction(const QString& text, const QKeySequence& key, const Vec3& direction);
     QAction* addShortcutAction(const QString& text, const QString& objectName, const QList<QKeySequence>& keys);
 
@@ -106,22 +110,13 @@ private:
     QLabel* statusLabel_ = nullptr;
     QLabel* alertLabel_ = nullptr;
     QDockWidget* derivationDock_ = nullptr;
-
-    // Parameter bar.
-    QComboBox* speedBox_ = nullptr;
-    QComboBox* dtBox_ = nullptr;
-    QComboBox* integratorBox_ = nullptr;
-    QCheckBox* gravityBox_ = nullptr;
-    QDoubleSpinBox* restitutionBox_ = nullptr;
-    QDoubleSpinBox* frictionBox_ = nullptr;
-    bool syncing_ = false;
+    CodeView* codeView_ = nullptr;
+    QDockWidget* codeDock_ = nullptr;
+    ParameterBar* parameterBar_ = nullptr;
 
     QTimer* playTimer_ = nullptr;
-    QElapsedTimer playClock_;
-    double speed_ = 0.0;
-    double simDebt_ = 0.0;           // simulated seconds owed to real time
-    QElapsedTimer tableClock_;       // throttles the quantities table while playing
-    int focusBody_ = -1;             // the body a many-body derivation writes out
+    PlaybackClock clock_;            // steps per tick, and when the panels are due
+    int focusBody_ = -1;             // the body last grabbed: a many-body derivation follows it
     bool derivationDirty_ = false;   // the page does not show the current step yet
     bool traceDirty_ = false;        // nor does the quantities table
     QString derivationHtml_;

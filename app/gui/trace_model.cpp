@@ -1,6 +1,7 @@
 #include "app/gui/trace_model.h"
 
 #include "app/core/value_format.h"
+#include "physics/quantities.h"
 
 #include <QBrush>
 #include <QColor>
@@ -15,8 +16,8 @@ QString humanName(const TraceEntry& e)
     const QString id = QString::fromLatin1(e.info->id);
     if (e.info->stage == Stage::Collision) {
         // Inside a contact's group the index is the group itself.
-        if (id == "x_a" || id == "x_b") return id;
-        if (id == "point") return QObject::tr("contact point");
+        if (e.info == &q::x_a || e.info == &q::x_b) return id;
+        if (e.info == &q::contact_point) return QObject::tr("contact point");
         return QString(id).replace('_', ' ').replace(QStringLiteral(" a"), QStringLiteral(" A")).replace(QStringLiteral(" b"), QStringLiteral(" B"));
     }
     QString name = QString(id).replace('_', ' ');
@@ -86,6 +87,8 @@ bool TraceModel::sameShape(const StepTrace& next) const
         const TraceEntry& a = next.entries[i];
         const TraceEntry& b = trace_.entries[i];
         if (a.info != b.info || a.body != b.body || a.index != b.index) return false;
+        // Another statement computed it (another integrator): the Source column changes.
+        if (a.where.line() != b.where.line() || sourceFile(a) != sourceFile(b)) return false;
     }
     return true;
 }
@@ -259,16 +262,28 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const
         case ValueColumn: return formatValue(e.value);
         case FrameColumn: return QString::fromLatin1(frameName(e.info->frame));
         case UnitColumn: return QString::fromUtf8(e.info->unit);
+        case SourceColumn: {
+            // The file's name and the line; the tooltip has the path in the tree.
+            const std::string_view file = sourceFile(e);
+            const size_t slash = file.rfind('/');
+            const std::string_view name = slash == std::string_view::npos ? file : file.substr(slash + 1);
+            return QStringLiteral("%1:%2")
+                .arg(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())))
+                .arg(sourceLine(e));
+        }
         case FormulaColumn: return QString::fromUtf8(e.info->formula);
         }
         return {};
     case Qt::ToolTipRole:
-        return QString::fromUtf8(e.info->formula);
+        if (index.column() == SourceColumn) {
+            return QString::fromStdString(sourceText(e));
+        }
+        return tr("%1\nComputed in %2").arg(QString::fromUtf8(e.info->formula), QString::fromStdString(sourceText(e)));
     case Qt::BackgroundRole:
         if (changed_[n.entry]) return QBrush(QColor(255, 244, 196));
         return {};
     case Qt::FontRole:
-        if (index.column() == ValueColumn) return QFont(QStringLiteral("monospace"));
+        if (index.column() == ValueColumn || index.column() == SourceColumn) return QFont(QStringLiteral("monospace"));
         return {};
     case IdRole:
         return QString::fromLatin1(e.info->id);
@@ -276,6 +291,12 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const
         return QString::fromUtf8(e.info->symbol) + QStringLiteral(" = ") + latexValue(e.value);
     case ChangedRole:
         return bool(changed_[n.entry]);
+    case SourceFileRole: {
+        const std::string_view file = sourceFile(e);
+        return QString::fromUtf8(file.data(), static_cast<qsizetype>(file.size()));
+    }
+    case SourceLineRole:
+        return static_cast<int>(sourceLine(e));
     }
     return {};
 }
@@ -289,6 +310,7 @@ QVariant TraceModel::headerData(int section, Qt::Orientation orientation, int ro
     case ValueColumn: return tr("Value");
     case FrameColumn: return tr("Frame");
     case UnitColumn: return tr("Unit");
+    case SourceColumn: return tr("Source");
     case FormulaColumn: return tr("Formula (LaTeX)");
     }
     return {};

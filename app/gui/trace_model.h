@@ -1,5 +1,7 @@
 // A tree model over one step's trace: stage -> body -> quantity rows, with columns
-// quantity, symbol, value, frame, unit and formula. It only presents the trace; it
+// quantity, symbol, value, frame, unit, source (the physics statement that computed
+// the value: "explicit_euler.cpp:27", with sourceText's "physics/integrators/
+// explicit_euler.cpp:27" as its tooltip) and formula. It only presents the trace; it
 // never computes a number. When the next step has the same rows, only the values
 // that changed are reported (dataChanged), and they are highlighted.
 #pragma once
@@ -16,11 +18,22 @@ namespace rbw {
 class TraceModel : public QAbstractItemModel {
     Q_OBJECT
 public:
-    enum Column { QuantityColumn, SymbolColumn, ValueColumn, FrameColumn, UnitColumn, FormulaColumn, ColumnCount };
+    enum Column {
+        QuantityColumn,
+        SymbolColumn,
+        ValueColumn,
+        FrameColumn,
+        UnitColumn,
+        SourceColumn,
+        FormulaColumn,
+        ColumnCount
+    };
     enum Role {
         IdRole = Qt::UserRole + 1,   // the quantity's stable id, on every column of a row
         LatexRole,                   // "symbol = value" in LaTeX
         ChangedRole,                 // true when the value differs from the previous step's
+        SourceFileRole,              // the computing statement's file, relative to the source tree
+        SourceLineRole,              // and its line (1-based)
     };
 
     explicit TraceModel(QObject* parent = nullptr);

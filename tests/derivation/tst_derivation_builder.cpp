@@ -1,5 +1,5 @@
 // The derivation builder and its template language, without a display: lesson 1's
-// page against the hand calculation of Table 2.1 (reference.md section 1), lesson 3's
+// page against the hand calculation of Table 2.1 (docs/references.md §1), lesson 3's
 // impulse against lessons/03-two-box-collision/lesson.md, the "not computed" note,
 // template syntax errors, the fallback, every lesson's template over its steps, and
 // the standalone-HTML export.
@@ -31,6 +31,8 @@ private slots:
     void syntaxErrors();
     void validTemplateHasNoErrors();
     void fallbackShowsEveryEntry();
+    void focusBodyWritesOneBody_data();
+    void focusBodyWritesOneBody();
     void lessonTemplatesCoverTheirSteps_data();
     void lessonTemplatesCoverTheirSteps();
     void standaloneHtmlEmbedsFonts();
@@ -320,6 +322,50 @@ void TestDerivationBuilder::fallbackShowsEveryEntry()
     const int probes = doc.html.indexOf(QLatin1String("<h2>Probes</h2>"));
     QVERIFY(forces >= 0 && forces < integration && integration < probes);
     QVERIFY(doc.html.contains(vec("-2.4", "4.918033", "-1.764706")));
+}
+
+void TestDerivationBuilder::focusBodyWritesOneBody_data()
+{
+    QTest::addColumn<bool>("withTemplate");
+    QTest::newRow("lesson 4's template") << true;
+    QTest::newRow("fallback") << false;
+}
+
+void TestDerivationBuilder::focusBodyWritesOneBody()
+{
+    // Lesson 4's fifty boxes: with options.focusBody the page writes out that box
+    // alone, under a note at the top that names it; without, every box.
+    QFETCH(bool, withTemplate);
+    QTemporaryDir empty;
+    const QString dir = withTemplate ? lessonDir(QStringLiteral("04-many-boxes")) : empty.path();
+    const SceneLoadResult loaded = loadSceneFile(lessonDir(QStringLiteral("04-many-boxes")) + "/fifty-boxes.json");
+    QVERIFY(loaded.ok());
+    const SceneDef& scene = *loaded.scene;
+    QCOMPARE(int(scene.bodies.size()), 50);
+    const StepTrace t = traceOfStep(scene, 0);
+    const QString b08 = QString::fromStdString(scene.bodies[7].name);
+    const QString b09 = QString::fromStdString(scene.bodies[8].name);
+    // The fallback names a body's group by its name alone; the template by "Motion of".
+    auto mentions = [&](const QString& html, const QString& name) {
+        return html.contains(QStringLiteral(">Motion of %1<").arg(name)) || html.contains(QStringLiteral(">%1<").arg(name));
+    };
+
+    DerivationOptions options;
+    options.focusBody = 7;
+    const DerivationDocument focused = buildLessonDerivation(t, scene, dir, options);
+    QCOMPARE(focused.fallback, !withTemplate);
+    QVERIFY2(focused.errors.isEmpty(), qPrintable(focused.errors.join('\n')));
+    const QString note = QStringLiteral("<main class=\"derivation\">\n<p class=\"focus-note\"");
+    QVERIFY2(focused.html.contains(note), "the note comes first on the page");
+    QVERIFY(focused.html.contains(QStringLiteral("This scene has 50 bodies: the page writes out <b>%1</b>").arg(b08)));
+    QVERIFY(mentions(focused.html, b08));
+    QVERIFY(!mentions(focused.html, b09));
+
+    // Negative control: the same step without a focus writes out box 9, and no note.
+    const DerivationDocument all = buildLessonDerivation(t, scene, dir);
+    QVERIFY(!all.html.contains(QLatin1String("focus-note")));
+    QVERIFY(mentions(all.html, b08));
+    QVERIFY(mentions(all.html, b09));
 }
 
 void TestDerivationBuilder::lessonTemplatesCoverTheirSteps_data()

@@ -1,5 +1,8 @@
 #include "app/gui/derivation/derivation_builder.h"
 
+#include "physics/quantities.h"
+
+#include "app/core/focus_filter.h"
 #include "app/core/value_format.h"
 #include "app/gui/derivation/derivation_fallback.h"
 #include "app/gui/derivation/derivation_template.h"
@@ -190,7 +193,7 @@ QString Expander::valueLatex(const Placeholder& p, const Context& ctx, int line,
                     }
                 }
             }
-            if (info == nullptr) info = catalogueInfo(id);
+            if (info == nullptr) info = findQuantity(id);
             if (p.prefix == QLatin1String("symbol")) return QString::fromUtf8(info->symbol);
             if (p.prefix == QLatin1String("formula")) return QString::fromUtf8(info->formula);
             return unitLatex(QString::fromUtf8(info->unit));
@@ -235,9 +238,9 @@ QString Expander::placeholder(const QString& inside, const Context& ctx, int lin
 std::vector<int> Expander::loopIndices(IndexKind kind, const Context& ctx) const
 {
     switch (kind) {
-    case IndexKind::Force: return indicesOf(trace_, "applied_force", ctx.look.body);
-    case IndexKind::Torque: return indicesOf(trace_, "applied_torque", ctx.look.body);
-    case IndexKind::Probe: return indicesOf(trace_, "point_velocity", ctx.look.body);
+    case IndexKind::Force: return indicesOf(trace_, q::applied_force.id, ctx.look.body);
+    case IndexKind::Torque: return indicesOf(trace_, q::applied_torque.id, ctx.look.body);
+    case IndexKind::Probe: return indicesOf(trace_, q::point_velocity.id, ctx.look.body);
     case IndexKind::Contact: {
         std::vector<int> all;
         for (int k = 0; k < static_cast<int>(trace_.contacts.size()); ++k) {
@@ -246,9 +249,10 @@ std::vector<int> Expander::loopIndices(IndexKind kind, const Context& ctx) const
         }
         return all;
     }
+    case IndexKind::RkStage: return indicesOf(trace_, q::stage_velocity.id, ctx.look.body);
     case IndexKind::Correction: {
-        std::vector<int> a = indicesOf(trace_, "correction_a", ctx.look.body);
-        for (int i : indicesOf(trace_, "correction_b", ctx.look.body)) {
+        std::vector<int> a = indicesOf(trace_, q::correction_a.id, ctx.look.body);
+        for (int i : indicesOf(trace_, q::correction_b.id, ctx.look.body)) {
             if (std::find(a.begin(), a.end(), i) == a.end()) a.push_back(i);
         }
         std::sort(a.begin(), a.end());
@@ -482,20 +486,40 @@ QString titleOf(const SceneDef& scene, const StepTrace& trace)
     return QStringLiteral("%1 \u2014 step %2").arg(QString::fromStdString(scene.name)).arg(trace.step);
 }
 
-} // namespace
+bool focused(const SceneDef& scene, const DerivationOptions& options)
+{
+    return options.focusBody >= 0 && options.focusBody < static_cast<int>(scene.bodies.size());
+}
 
-DerivationDocument buildFallbackDerivation(const StepTrace& trace, const SceneDef& scene, const DerivationOptions& options)
+// The note at the top of a page that writes out one body of many.
+QString focusNote(const SceneDef& scene, const DerivationOptions& options)
+{
+    if (!focused(scene, options)) return {};
+    return QStringLiteral("<p class=\"focus-note\" style=\"background:#fff4d6;padding:6px 10px;border-radius:4px\">"
+                          "This scene has %1 bodies: the page writes out <b>%2</b> and its contacts. "
+                          "Press on another box in the 3D view to follow it.</p>\n")
+        .arg(static_cast<int>(scene.bodies.size()))
+        .arg(htmlEscape(QString::fromStdString(scene.bodies[options.focusBody].name)));
+}
+
+// The page around a body, with the focus note first.
+QString page(const QString& body, const SceneDef& scene, const StepTrace& trace, const DerivationOptions& options)
+{
+    return derivationPage(focusNote(scene, options) + body, titleOf(scene, trace), options.katexUrl);
+}
+
+DerivationDocument fallbackDocument(const StepTrace& trace, const SceneDef& scene, const DerivationOptions& options)
 {
     DerivationDocument doc;
     doc.fallback = true;
     const QString body = QStringLiteral("<h1>Step %1: every traced quantity</h1>\n").arg(trace.step) +
                          stepInfo(trace, scene, options.digits) + fallbackDerivationBody(trace, scene, options.digits);
-    doc.html = derivationPage(body, titleOf(scene, trace), options.katexUrl);
+    doc.html = page(body, scene, trace, options);
     return doc;
 }
 
-DerivationDocument buildDerivation(const StepTrace& trace, const SceneDef& scene, const QString& templateText,
-                                   const QString& templateLabel, const DerivationOptions& options)
+DerivationDocument templateDocument(const StepTrace& trace, const SceneDef& scene, const QString& templateText,
+                                    const QString& templateLabel, const DerivationOptions& options)
 {
     const TemplateParseResult parsed = parseDerivationTemplate(templateText, templateLabel);
     if (!parsed.ok()) {
@@ -506,7 +530,7 @@ DerivationDocument buildDerivation(const StepTrace& trace, const SceneDef& scene
                              QStringLiteral("<h1>Step %1: every traced quantity</h1>\n").arg(trace.step) +
                              stepInfo(trace, scene, options.digits) +
                              fallbackDerivationBody(trace, scene, options.digits);
-        doc.html = derivationPage(body, titleOf(scene, trace), options.katexUrl);
+        doc.html = page(body, scene, trace, options);
         return doc;
     }
     Expander expander(trace, scene, templateLabel, options.digits);
@@ -522,8 +546,25 @@ DerivationDocument buildDerivation(const StepTrace& trace, const SceneDef& scene
     } else {
         body += stepInfo(trace, scene, options.digits) + content;
     }
-    doc.html = derivationPage(body, titleOf(scene, trace), options.katexUrl);
+    doc.html = page(body, scene, trace, options);
     return doc;
+}
+
+} // namespace
+
+DerivationDocument buildFallbackDerivation(const StepTrace& trace, const SceneDef& scene, const DerivationOptions& options)
+{
+    if (focused(scene, options)) return fallbackDocument(focusTrace(trace, options.focusBody), scene, options);
+    return fallbackDocument(trace, scene, options);
+}
+
+DerivationDocument buildDerivation(const StepTrace& trace, const SceneDef& scene, const QString& templateText,
+                                   const QString& templateLabel, const DerivationOptions& options)
+{
+    if (focused(scene, options)) {
+        return templateDocument(focusTrace(trace, options.focusBody), scene, templateText, templateLabel, options);
+    }
+    return templateDocument(trace, scene, templateText, templateLabel, options);
 }
 
 DerivationDocument buildLessonDerivation(const StepTrace& trace, const SceneDef& scene, const QString& lessonDirectory,

@@ -21,6 +21,10 @@ namespace rbw {
 struct DerivationOptions {
     QString katexUrl = defaultKatexUrl();   // where katex.min.js/.css are, with a trailing slash
     int digits = 7;                         // significant digits of every number
+    // A scene with many bodies (app/core/focus_filter.h): >= 0 writes out only this
+    // body, the world-level rows and the contacts it takes part in (focusTrace), under
+    // a note at the top of the page that says so. -1: every body.
+    int focusBody = -1;
 };
 
 struct DerivationDocument {

@@ -1,5 +1,7 @@
 #include "app/gui/derivation/derivation_template.h"
 
+#include "physics/quantities.h"
+
 #include "app/gui/derivation/trace_lookup.h"
 
 #include <QRegularExpression>
@@ -17,8 +19,8 @@ const QStringList& sceneKeys()
 
 const QStringList& preIds()
 {
-    static const QStringList ids = {QStringLiteral("linear_velocity"), QStringLiteral("angular_velocity"),
-                                    QStringLiteral("angular_momentum")};
+    static const QStringList ids = {QLatin1String(q::linear_velocity.id), QLatin1String(q::angular_velocity.id),
+                                    QLatin1String(q::angular_momentum.id)};
     return ids;
 }
 
@@ -134,7 +136,7 @@ QString parsePlaceholder(const QString& inside, Placeholder* out)
     } else if (p.prefix.isEmpty() && isMetaName(p.name)) {
         // meta text
     } else if (findQuantity(p.name.toStdString()) == nullptr) {
-        return QStringLiteral("unknown quantity '%1' in {{%2}} (see physics/quantities.h for the ids)")
+        return QStringLiteral("unknown quantity '%1' in {{%2}} (rbw quantities lists the ids)")
             .arg(p.name, inside);
     }
     *out = p;

@@ -159,7 +159,7 @@ ViewSnapshot makeViewSnapshot(const World& world, const StepTrace* trace)
             c.n_W = *pc.n_W;
             c.separating = h.separating;
             c.J = h.separating ? 0.0 : pc.J;
-            // The impulse on A along the normal: J n (reference.md section 3).
+            // The impulse on A along the normal: J n (docs/references.md §3).
             c.impulse_W = c.J * c.n_W;
             snap.contacts.push_back(c);
         }
