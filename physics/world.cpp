@@ -104,8 +104,8 @@ Vec3 World::worldToBody(int body, const Vec3& p_W) const
 
 StepContext World::context(StepTrace* trace)
 {
-    return StepContext{scene_,  mass_,  conventions_, movable_,  probeOffsets_B_, onceForces_,
-                       torqueEnabled_, states_, loads_, scratch_, trace, stepIndex_};
+    return StepContext{scene_,         mass_,   conventions_, movable_,  probeOffsets_B_, onceForces_,
+                       torqueEnabled_, states_, loads_,       scratch_, trace,           stepIndex_, status_};
 }
 
 StepStatus World::step(StepTrace* trace)
@@ -119,14 +119,14 @@ StepStatus World::step(StepTrace* trace)
     }
     // A new step's loads and scratch.
     std::fill(loads_.begin(), loads_.end(), BodyLoad{});
-    std::fill(scratch_.loaded.begin(), scratch_.loaded.end(), 0);
+    if (trace != nullptr) std::fill(scratch_.loaded.begin(), scratch_.loaded.end(), 0);
     scratch_.corrections.clear();
     scratch_.contactCount = 0;
 
     // The pipeline the scene built, in order; a check that finds a blow-up stops it.
     StepContext ctx = context(trace);
     for (PipelineEntry& e : pipeline_) {
-        status_ = e.step->run(ctx);
+        e.step->run(ctx);
         if (!status_.ok) break;
     }
 

@@ -8,7 +8,7 @@
 
 namespace rbw {
 
-StepStatus BoxBoxStage::run(StepContext& ctx)
+void BoxBoxStage::run(StepContext& ctx)
 {
     const int n = static_cast<int>(ctx.states.size());
     aabbs_.resize(n);
@@ -26,7 +26,6 @@ StepStatus BoxBoxStage::run(StepContext& ctx)
             resolveContact(ctx, *hit, a, b, -1, "single-point", 1);
         }
     }
-    return StepStatus::success();
 }
 
 } // namespace rbw

@@ -10,7 +10,7 @@ namespace rbw {
 class BoxBoxStage final : public PipelineStep {
 public:
     PipelineStage kind() const override { return PipelineStage::BoxBox; }
-    StepStatus run(StepContext& ctx) override;
+    void run(StepContext& ctx) override;
 
 private:
     // Scratch kept between steps to avoid allocations.

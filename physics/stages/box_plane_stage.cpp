@@ -5,7 +5,7 @@
 
 namespace rbw {
 
-StepStatus BoxPlaneStage::run(StepContext& ctx)
+void BoxPlaneStage::run(StepContext& ctx)
 {
     const SceneDef& scene = ctx.scene;
     for (int p = 0; p < static_cast<int>(scene.planes.size()); ++p) {
@@ -26,7 +26,6 @@ StepStatus BoxPlaneStage::run(StepContext& ctx)
             }
         }
     }
-    return StepStatus::success();
 }
 
 } // namespace rbw

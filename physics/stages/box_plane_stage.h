@@ -11,7 +11,7 @@ namespace rbw {
 class BoxPlaneStage final : public PipelineStep {
 public:
     PipelineStage kind() const override { return PipelineStage::BoxPlane; }
-    StepStatus run(StepContext& ctx) override;
+    void run(StepContext& ctx) override;
 
 private:
     std::vector<ContactGeometry> contacts_;   // scratch kept between steps

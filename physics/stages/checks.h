@@ -12,14 +12,14 @@ namespace rbw {
 class FiniteCheckStage final : public PipelineStep {
 public:
     PipelineStage kind() const override { return PipelineStage::FiniteCheck; }
-    StepStatus run(StepContext& ctx) override;
+    void run(StepContext& ctx) override;
 };
 
 class EnergyBoundStage final : public PipelineStep {
 public:
     explicit EnergyBoundStage(const std::vector<MassProperties>& mass);
     PipelineStage kind() const override { return PipelineStage::EnergyBound; }
-    StepStatus run(StepContext& ctx) override;
+    void run(StepContext& ctx) override;
 
 private:
     std::vector<double> maxInvInertia_;   // per body: largest entry of I0^-1 (diagonal) [1/(kg m^2)]
@@ -28,7 +28,7 @@ private:
 class EnergyCheckStage final : public PipelineStep {
 public:
     PipelineStage kind() const override { return PipelineStage::EnergyCheck; }
-    StepStatus run(StepContext& ctx) override;
+    void run(StepContext& ctx) override;
 };
 
 } // namespace rbw

@@ -8,7 +8,7 @@
 
 namespace rbw {
 
-StepStatus CorrectionStage::run(StepContext& ctx)
+void CorrectionStage::run(StepContext& ctx)
 {
     int index = 0;
     for (const PendingCorrection& c : ctx.scratch.corrections) {
@@ -44,7 +44,6 @@ StepStatus CorrectionStage::run(StepContext& ctx)
             ctx.states[b].x_W += dx_A;
         }
     }
-    return StepStatus::success();
 }
 
 } // namespace rbw

@@ -11,7 +11,7 @@ namespace rbw {
 class CorrectionStage final : public PipelineStep {
 public:
     PipelineStage kind() const override { return PipelineStage::Correction; }
-    StepStatus run(StepContext& ctx) override;
+    void run(StepContext& ctx) override;
 };
 
 } // namespace rbw

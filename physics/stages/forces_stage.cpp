@@ -4,7 +4,7 @@
 
 namespace rbw {
 
-StepStatus GravityStage::run(StepContext& ctx)
+void GravityStage::run(StepContext& ctx)
 {
     const int n = static_cast<int>(ctx.states.size());
     for (int b = 0; b < n; ++b) {
@@ -17,7 +17,6 @@ StepStatus GravityStage::run(StepContext& ctx)
             ctx.scratch.loaded[b] = 1;
         }
     }
-    return StepStatus::success();
 }
 
 namespace {
@@ -39,7 +38,7 @@ void applyForce(StepContext& ctx, const ForceDef& f, int index)
 
 } // namespace
 
-StepStatus LoadsStage::run(StepContext& ctx)
+void LoadsStage::run(StepContext& ctx)
 {
     // External forces f_i at world points p_i (TUM algorithm step 1), then the
     // interaction's one-step forces, numbered after them.
@@ -63,7 +62,7 @@ StepStatus LoadsStage::run(StepContext& ctx)
         }
     }
 
-    if (ctx.trace == nullptr) return StepStatus::success();
+    if (ctx.trace == nullptr) return;
     // The totals, for the bodies that carry a load (summed above, term by term).
     const QuantityInfo& F = afterGravity_ ? q::force_with_gravity : q::force;
     const QuantityInfo& torque = ctx.scene.torques.empty() ? q::torque : q::torque_with_couples;
@@ -72,7 +71,6 @@ StepStatus LoadsStage::run(StepContext& ctx)
         record(ctx.trace, F, b, ctx.loads[b].F_W);
         record(ctx.trace, torque, b, ctx.loads[b].q_W);
     }
-    return StepStatus::success();
 }
 
 } // namespace rbw

@@ -11,7 +11,7 @@ namespace rbw {
 class GravityStage final : public PipelineStep {
 public:
     PipelineStage kind() const override { return PipelineStage::Gravity; }
-    StepStatus run(StepContext& ctx) override;
+    void run(StepContext& ctx) override;
 };
 
 // F = sum f_i (+ M g),  q = sum (p_i - x) x f_i + sum q_j, and their trace rows.
@@ -19,7 +19,7 @@ class LoadsStage final : public PipelineStep {
 public:
     explicit LoadsStage(bool afterGravity) : afterGravity_(afterGravity) {}
     PipelineStage kind() const override { return PipelineStage::Loads; }
-    StepStatus run(StepContext& ctx) override;
+    void run(StepContext& ctx) override;
 
 private:
     bool afterGravity_;   // F's formula names M g

@@ -11,13 +11,12 @@ IntegrationStage::IntegrationStage(std::unique_ptr<Integrator> integrator, std::
 {
 }
 
-StepStatus IntegrationStage::run(StepContext& ctx)
+void IntegrationStage::run(StepContext& ctx)
 {
     // Each body with its own inertia convention (I^-1 = R I0^-1 R^T or R^T I0^-1 R).
     const IntegrationInput in{ctx.scene.dt,      ctx.scene.bodies, ctx.mass, ctx.loads, ctx.scene.inertiaConvention,
                               &ctx.conventions, all_ ? nullptr : &active_};
     integrator_->integrate(in, ctx.states, ctx.trace);
-    return StepStatus::success();
 }
 
 } // namespace rbw

@@ -16,7 +16,7 @@ public:
     IntegrationStage(std::unique_ptr<Integrator> integrator, std::vector<int> bodies,
                      std::vector<char> active, bool all);
     PipelineStage kind() const override { return PipelineStage::Integration; }
-    StepStatus run(StepContext& ctx) override;
+    void run(StepContext& ctx) override;
     const char* integratorName() const override { return integrator_->name(); }
     const std::vector<int>* bodies() const override { return &bodies_; }
     const Integrator& integrator() const { return *integrator_; }

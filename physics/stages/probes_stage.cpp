@@ -19,13 +19,12 @@ ProbeReading readProbe(const SceneDef& scene, const std::vector<BodyState>& stat
     return r;
 }
 
-StepStatus ProbesStage::run(StepContext& ctx)
+void ProbesStage::run(StepContext& ctx)
 {
-    if (ctx.trace == nullptr) return StepStatus::success();   // nothing to show
+    if (ctx.trace == nullptr) return;   // nothing to show
     for (int i = 0; i < static_cast<int>(ctx.scene.probes.size()); ++i) {
         readProbe(ctx.scene, ctx.states, ctx.probeOffsets_B, i, ctx.trace);
     }
-    return StepStatus::success();
 }
 
 } // namespace rbw

@@ -21,7 +21,7 @@ ProbeReading readProbe(const SceneDef& scene, const std::vector<BodyState>& stat
 class ProbesStage final : public PipelineStep {
 public:
     PipelineStage kind() const override { return PipelineStage::Probes; }
-    StepStatus run(StepContext& ctx) override;
+    void run(StepContext& ctx) override;
 };
 
 } // namespace rbw

@@ -3,8 +3,8 @@
 // A world builds its pipeline once, from what its scene declares (pipeline_builder.cpp):
 // a list of stages, each an object of a class in this folder, one concept per file.
 // World::step() runs that list in order and nothing else, so the pipeline a view
-// describes (World::pipeline(), `rbw run`'s "pipeline") is what runs. A stage that
-// finds a blow-up returns its status and the step stops there.
+// describes (World::pipeline()) is what runs. A stage that finds a blow-up sets the
+// step's status and the step stops there.
 //
 //   gravity -> loads -> [energy_bound] -> integration (one per integrator group)
 //   -> finite_check -> [energy_check] -> [box_box] -> [box_plane] -> [correction]
@@ -74,13 +74,16 @@ struct StepContext {
     StepScratch& scratch;
     StepTrace* trace;    // nullptr: record nothing
     long k;              // this step advances t_k = k h to t_{k+1}
+    StepStatus& status;  // ok until a check finds a blow-up; then the pipeline stops
 };
 
 class PipelineStep {
 public:
     virtual ~PipelineStep() = default;
     virtual PipelineStage kind() const = 0;
-    virtual StepStatus run(StepContext& ctx) = 0;
+    // Runs the stage on this step; a stage that finds a blow-up sets ctx.status (and
+    // only then: a successful step assigns no status, which keeps a step cheap).
+    virtual void run(StepContext& ctx) = 0;
     // Integration only: the integrator's name and the bodies it advances.
     virtual const char* integratorName() const { return ""; }
     virtual const std::vector<int>* bodies() const { return nullptr; }
