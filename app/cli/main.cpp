@@ -1,6 +1,7 @@
 // rbw: the headless command line of Rigid Body Workbook. It runs a scene and prints
 // the state, the diagnostics and the step trace as JSON (or CSV), for scripts,
 // graders and the tests. Exit status: 0 success, 2 bad input, 3 blow-up.
+#include "app/cli/check_command.h"
 #include "app/core/csv_output.h"
 #include "app/core/json_output.h"
 #include "app/core/lesson_catalogue.h"
@@ -277,6 +278,9 @@ int main(int argc, char* argv[])
         "  lessons           list the lessons with their one-line descriptions\n"
         "  integrators       list the integrators a scene can choose\n"
         "  quantities        list every traced quantity: id, symbol, unit, stage (--format json|csv)\n"
+        "  check SCENE.json ANSWERS.json [MORE.json ...]\n"
+        "                    check a student's numbers for one step (--step K, --tolerance REL,\n"
+        "                    --format text|json|csv); exit 0 all correct, 1 some not\n"
         "  study SCENE.json  every integrator at every dt against the scene's exact answer (CSV)\n\n"
         "Exit status: 0 success, 2 bad input (the message names the file, field and reason),\n"
         "3 the simulation blew up (the message names the step, body and quantity).\n\n"
@@ -286,7 +290,7 @@ int main(int argc, char* argv[])
         "  rbw study lessons/10-accuracy-lab/scene.json --integrators explicit-euler,rk4 --dt 0.1,0.01");
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument("command", "run, study, lessons, integrators or quantities");
+    parser.addPositionalArgument("command", "run, study, check, lessons, integrators or quantities");
     parser.addPositionalArgument("scene", "the scene file, for run and study", "[SCENE.json]");
     parser.addOptions({
         {"steps", "Number of steps to take (default: the scene's \"steps\").", "N"},
@@ -296,6 +300,8 @@ int main(int argc, char* argv[])
         {"trace", "Which step traces to print: none, last or all.", "none|last|all", "last"},
         {"format", "Output format: json (one document) or csv (one row per step).", "json|csv", "json"},
         {"integrators", "For study: comma-separated integrator names (default: all).", "A,B,..."},
+        {"step", "For check: the step K whose numbers are checked (default: the answers file's \"step\", else 0).", "K"},
+        {"tolerance", "For check: relative tolerance of a correct answer (default 1e-3: 4 significant figures).", "REL"},
         {"t-end", "For study: end time T in seconds, the same for every run (default: steps x dt of the scene).", "T"},
         {"output", "For study: write the CSV to FILE instead of standard output.", "FILE"},
     });
@@ -324,5 +330,9 @@ int main(int argc, char* argv[])
     if (command == "lessons" && args.size() == 1) return listLessons();
     if (command == "integrators" && args.size() == 1) return listIntegrators();
     if (command == "quantities" && args.size() == 1) return listQuantities(parser);
+    if (command == "check") {
+        if (args.size() < 3) return badInput("check takes a scene file and at least one answers file (see rbw --help)");
+        return rbw::runCheckCommand(parser, args[1], args.mid(2));
+    }
     return badInput("unknown command \"" + args.join(' ') + "\" (see rbw --help)");
 }
