@@ -1,19 +1,17 @@
 #include "app/core/compact_trace.h"
 
-#include <cassert>
-#include <limits>
-
 namespace rbw {
 
 CompactTrace::CompactTrace(const StepTrace& trace)
     : step_(trace.step), time_(trace.time), contacts_(trace.contacts), diagnostics_(trace.diagnostics)
 {
+    static_assert(sizeof(Header) == 24, "the packed header: two pointers and two ints");
     headers_.reserve(trace.entries.size());
+    kinds_.reserve(trace.entries.size());
     values_.reserve(trace.entries.size() * 4);
     for (const TraceEntry& e : trace.entries) {
-        assert(e.index >= std::numeric_limits<std::int16_t>::min() && e.index <= std::numeric_limits<std::int16_t>::max());
-        headers_.push_back(Header{e.info, e.where, e.body, static_cast<std::int16_t>(e.index),
-                                  static_cast<std::uint8_t>(e.value.index())});
+        headers_.push_back(Header{e.info, e.where, e.body, e.index});
+        kinds_.push_back(static_cast<std::uint8_t>(e.value.index()));
         switch (e.value.index()) {
         case 0:
             values_.push_back(std::get<double>(e.value));
@@ -47,9 +45,10 @@ StepTrace CompactTrace::unpack() const
     t.diagnostics = diagnostics_;
     t.entries.reserve(headers_.size());
     const double* v = values_.data();
-    for (const Header& h : headers_) {
+    for (std::size_t i = 0; i < headers_.size(); ++i) {
+        const Header& h = headers_[i];
         TraceValue value;
-        switch (h.kind) {
+        switch (kinds_[i]) {
         case 0:
             value = *v;
             v += 1;
@@ -77,7 +76,7 @@ StepTrace CompactTrace::unpack() const
 
 std::size_t CompactTrace::bytes() const
 {
-    return headers_.capacity() * sizeof(Header) + values_.capacity() * sizeof(double) +
+    return headers_.capacity() * sizeof(Header) + kinds_.capacity() + values_.capacity() * sizeof(double) +
            contacts_.capacity() * sizeof(ContactHeader);
 }
 

@@ -6,10 +6,17 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonParseError>
+#include <QLocale>
 
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
 
 namespace rbw {
 namespace {
@@ -23,6 +30,20 @@ struct FieldError {
 QString join(const QString& path, const QString& key)
 {
     return path.isEmpty() ? key : path + '.' + key;
+}
+
+// What a message echoes from the file (a key, a word): cut and escaped by physics'
+// messageText(). It keeps 40 characters; 200 UTF-16 units hold at least 100, so a
+// 50 MB key is never copied whole.
+QString shown(const QString& text)
+{
+    return QString::fromStdString(messageText(text.left(200).toStdString()));
+}
+
+// The shortest text that reads back as the same double (2.0000001, not Qt's default 2).
+QString numText(double x)
+{
+    return QString::number(x, 'g', QLocale::FloatingPointShortest);
 }
 
 QString typeName(const QJsonValue& v)
@@ -65,6 +86,11 @@ void checkKeys(const QJsonObject& o, const QString& path, const QStringList& all
         QString best;
         int bestDistance = 3;
         for (const QString& k : allowed) {
+            // The distance is at least the difference in length: a long key is never
+            // compared letter by letter (a 50 MB key took 15 s).
+            if (std::abs(it.key().size() - k.size()) >= bestDistance) {
+                continue;
+            }
             const int d = editDistance(it.key(), k);
             if (d < bestDistance) {
                 bestDistance = d;
@@ -77,7 +103,7 @@ void checkKeys(const QJsonObject& o, const QString& path, const QStringList& all
         } else {
             reason += QStringLiteral(" (allowed: %1)").arg(allowed.join(QStringLiteral(", ")));
         }
-        throw FieldError{join(path, it.key()), reason};
+        throw FieldError{join(path, shown(it.key())), reason};
     }
 }
 
@@ -89,32 +115,30 @@ QJsonValue require(const QJsonObject& o, const QString& path, const QString& key
     return o.value(key);
 }
 
-// A number JSON cannot hold (NaN, Infinity, 1e999) is swapped for a string with this
-// prefix before a second parse, so the error can name the field it stands in.
-const QString kNonFinitePrefix = QStringLiteral("\u0001nonfinite:");
-
+// A number JSON cannot hold (NaN, Infinity, 1e999) is refused by QJsonDocument, and
+// the raw scan in parseScene() names its field; the check below only guards that.
 double toNumber(const QJsonValue& v, const QString& path)
 {
-    if (v.isString() && v.toString().startsWith(kNonFinitePrefix)) {
-        throw FieldError{path, QStringLiteral("must be a finite number, got %1 (JSON has no NaN or Infinity, "
-                                              "and every number must fit in a double)")
-                                   .arg(v.toString().mid(kNonFinitePrefix.size()))};
-    }
     if (!v.isDouble()) {
         throw FieldError{path, QStringLiteral("must be a number, got %1").arg(typeName(v))};
     }
     const double x = v.toDouble();
     if (!std::isfinite(x)) {
-        throw FieldError{path, QStringLiteral("must be finite, got %1").arg(x)};
+        throw FieldError{path, QStringLiteral("must be a finite number, got %1").arg(numText(x))};
     }
     return x;
 }
 
+// Whole numbers are read into a long; beyond 9e15 a double no longer holds every
+// whole number, so larger ones are refused here (steps has its own, lower limit).
 long toInteger(const QJsonValue& v, const QString& path)
 {
     const double x = toNumber(v, path);
-    if (x != std::floor(x) || std::abs(x) > 9.0e15) {
-        throw FieldError{path, QStringLiteral("must be a whole number, got %1").arg(x)};
+    if (x != std::floor(x)) {
+        throw FieldError{path, QStringLiteral("must be a whole number, got %1").arg(numText(x))};
+    }
+    if (std::abs(x) > 9.0e15) {
+        throw FieldError{path, QStringLiteral("must be a whole number from -9e15 to 9e15, got %1").arg(numText(x))};
     }
     return static_cast<long>(x);
 }
@@ -168,6 +192,23 @@ QJsonArray toArray(const QJsonValue& v, const QString& path)
     return v.toArray();
 }
 
+// A vector or quaternion is normalised by dividing by its length, sqrt of the sum of
+// the squares: that sum must neither overflow ([1e308, 1e308, 0]) nor round to 0
+// ([1e-200, 0, 0]), or the direction is lost (it used to become the identity).
+void requireNormalisable(double squaredNorm, const QString& path)
+{
+    if (!std::isfinite(squaredNorm)) {
+        throw FieldError{path, QStringLiteral("its length overflows (the sum of the squares exceeds the largest "
+                                              "double), so it cannot be normalised; only its direction counts, so "
+                                              "divide it by a large number")};
+    }
+    if (squaredNorm == 0.0) {
+        throw FieldError{path, QStringLiteral("its length underflows (the sum of the squares rounds to 0), so it "
+                                              "cannot be normalised; only its direction counts, so multiply it by "
+                                              "a large number")};
+    }
+}
+
 // { "axis": [x,y,z], "degrees": d } | { "axis": [...], "radians": a } | { "quaternion": [w,x,y,z] }
 Quat toOrientation(const QJsonValue& v, const QString& path)
 {
@@ -185,21 +226,30 @@ Quat toOrientation(const QJsonValue& v, const QString& path)
         // Scene files write quaternions scalar first: [w, x, y, z] (physics/math_types.h).
         const Quat q(toNumber(a[0], qp + "[0]"), toNumber(a[1], qp + "[1]"),
                      toNumber(a[2], qp + "[2]"), toNumber(a[3], qp + "[3]"));
-        if (q.norm() == 0.0) {
+        if (q.coeffs().isZero(0.0)) {
             throw FieldError{qp, QStringLiteral("must not be the zero quaternion")};
         }
+        requireNormalisable(q.coeffs().squaredNorm(), qp);
         return q.normalized();
     }
-    const Vec3 axis = toVec3(require(o, path, "axis"), join(path, "axis"));
-    if (axis.norm() == 0.0) {
-        throw FieldError{join(path, "axis"), QStringLiteral("rotation axis must not be zero")};
+    const QString ap = join(path, "axis");
+    const Vec3 axis = toVec3(require(o, path, "axis"), ap);
+    if (axis == Vec3::Zero()) {
+        throw FieldError{ap, QStringLiteral("rotation axis must not be zero")};
     }
+    requireNormalisable(axis.squaredNorm(), ap);
     if (o.contains("degrees") == o.contains("radians")) {
         throw FieldError{path, QStringLiteral("give the angle as exactly one of \"degrees\" or \"radians\"")};
     }
     const double angle = o.contains("degrees")
                              ? toNumber(o.value("degrees"), join(path, "degrees")) * std::numbers::pi / 180.0
                              : toNumber(o.value("radians"), join(path, "radians"));
+    if (!std::isfinite(angle)) {
+        // d pi overflows for |d| > DBL_MAX / pi = 5.7e307.
+        throw FieldError{join(path, "degrees"), QStringLiteral("overflows in the conversion to radians (d \u00b7 "
+                                                               "\u03c0 exceeds the largest double); must be at most "
+                                                               "5.7e307 in size")};
+    }
     return Quat(Eigen::AngleAxisd(angle, axis.normalized()));
 }
 
@@ -212,7 +262,7 @@ InertiaConvention toConvention(const QJsonValue& v, const QString& path)
     if (c == "course-template") {
         return InertiaConvention::CourseTemplate;
     }
-    throw FieldError{path, QStringLiteral("must be \"standard\" or \"course-template\", got \"%1\"").arg(c)};
+    throw FieldError{path, QStringLiteral("must be \"standard\" or \"course-template\", got \"%1\"").arg(shown(c))};
 }
 
 BodyDef toBody(const QJsonValue& v, const QString& path)
@@ -257,18 +307,18 @@ BodyDef toBody(const QJsonValue& v, const QString& path)
 
 // The body an object's "body" key names: its index, -1 if no body has the name. The
 // name is kept too, so that validate() can report it.
-int bodyByName(const SceneDef& scene, const QJsonObject& o, const QString& path, std::string& name)
+int bodyByName(const SceneNames& names, const QJsonObject& o, const QString& path, std::string& name)
 {
     name = toString(require(o, path, "body"), join(path, "body")).toStdString();
-    return scene.bodyIndex(name);
+    return names.body(name);
 }
 
-ForceDef toForce(const SceneDef& scene, const QJsonValue& v, const QString& path)
+ForceDef toForce(const SceneNames& names, const QJsonValue& v, const QString& path)
 {
     const QJsonObject o = toObject(v, path);
     checkKeys(o, path, {"body", "point", "force", "from_step", "to_step"});
     ForceDef f;
-    f.body = bodyByName(scene, o, path, f.bodyName);
+    f.body = bodyByName(names, o, path, f.bodyName);
     f.p_W = toVec3(require(o, path, "point"), join(path, "point"));
     f.f_W = toVec3(require(o, path, "force"), join(path, "force"));
     // Lifetime: steps k with from_step <= k < to_step. Neither key: step 0 only.
@@ -278,12 +328,12 @@ ForceDef toForce(const SceneDef& scene, const QJsonValue& v, const QString& path
     return f;
 }
 
-TorqueDef toTorque(const SceneDef& scene, const QJsonValue& v, const QString& path)
+TorqueDef toTorque(const SceneNames& names, const QJsonValue& v, const QString& path)
 {
     const QJsonObject o = toObject(v, path);
     checkKeys(o, path, {"body", "torque", "from_step", "to_step", "switchable", "enabled"});
     TorqueDef t;
-    t.body = bodyByName(scene, o, path, t.bodyName);
+    t.body = bodyByName(names, o, path, t.bodyName);
     t.q_W = toVec3(require(o, path, "torque"), join(path, "torque"));
     // Lifetime as for forces, except that a torque with neither key lasts for ever:
     // a couple is usually a motor, not a kick.
@@ -295,23 +345,23 @@ TorqueDef toTorque(const SceneDef& scene, const QJsonValue& v, const QString& pa
     return t;
 }
 
-PushDef toPush(const SceneDef& scene, const QJsonValue& v, const QString& path)
+PushDef toPush(const SceneNames& names, const QJsonValue& v, const QString& path)
 {
     const QJsonObject o = toObject(v, path);
     checkKeys(o, path, {"body", "point", "force"});
     PushDef p;
-    p.body = bodyByName(scene, o, path, p.bodyName);
+    p.body = bodyByName(names, o, path, p.bodyName);
     p.p_B = o.contains("point") ? toVec3(o.value("point"), join(path, "point")) : Vec3::Zero();
     p.magnitude = o.contains("force") ? toNumber(o.value("force"), join(path, "force")) : 1.0;
     return p;
 }
 
-ProbeDef toProbe(const SceneDef& scene, const QJsonValue& v, const QString& path)
+ProbeDef toProbe(const SceneNames& names, const QJsonValue& v, const QString& path)
 {
     const QJsonObject o = toObject(v, path);
     checkKeys(o, path, {"body", "point"});
     ProbeDef p;
-    p.body = bodyByName(scene, o, path, p.bodyName);
+    p.body = bodyByName(names, o, path, p.bodyName);
     p.p0_W = toVec3(require(o, path, "point"), join(path, "point"));
     return p;
 }
@@ -326,27 +376,30 @@ PlaneDef toPlane(const QJsonValue& v, const QString& path)
     // A file's normal may have any length: it is normalised here. The zero vector has
     // no direction and stays zero, for validate() to report.
     const Vec3 n = toVec3(require(o, path, "normal"), join(path, "normal"));
+    if (n != Vec3::Zero()) {
+        requireNormalisable(n.squaredNorm(), join(path, "normal"));
+    }
     p.n_W = n == Vec3::Zero() ? n : n.normalized();
     return p;
 }
 
-PairOverride toPair(const SceneDef& scene, const QJsonValue& v, const QString& path)
+PairOverride toPair(const SceneNames& names, const QJsonValue& v, const QString& path)
 {
     const QJsonObject o = toObject(v, path);
     checkKeys(o, path, {"bodies", "restitution", "friction"});
     const QString bp = join(path, "bodies");
-    const QJsonArray names = toArray(require(o, path, "bodies"), bp);
-    if (names.size() != 2) {
+    const QJsonArray given = toArray(require(o, path, "bodies"), bp);
+    if (given.size() != 2) {
         throw FieldError{bp, QStringLiteral("must name exactly two: [\"bodyA\", \"bodyB or plane\"]")};
     }
     // Names are resolved to indices (-1: none) and kept; validate() checks that they
     // exist, differ and are not listed twice.
     PairOverride pair;
-    pair.nameA = toString(names[0], bp + "[0]").toStdString();
-    pair.nameB = toString(names[1], bp + "[1]").toStdString();
-    pair.bodyA = scene.bodyIndex(pair.nameA);
-    pair.bodyB = scene.bodyIndex(pair.nameB);
-    pair.planeB = pair.bodyB < 0 ? scene.planeIndex(pair.nameB) : -1;
+    pair.nameA = toString(given[0], bp + "[0]").toStdString();
+    pair.nameB = toString(given[1], bp + "[1]").toStdString();
+    pair.bodyA = names.body(pair.nameA);
+    pair.bodyB = names.body(pair.nameB);
+    pair.planeB = pair.bodyB < 0 ? names.plane(pair.nameB) : -1;
     if (o.contains("restitution")) pair.restitution = toNumber(o.value("restitution"), join(path, "restitution"));
     if (o.contains("friction")) pair.friction = toNumber(o.value("friction"), join(path, "friction"));
     return pair;
@@ -354,6 +407,12 @@ PairOverride toPair(const SceneDef& scene, const QJsonValue& v, const QString& p
 
 SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
 {
+    // A scene without bodies has nothing to simulate, and everything that names a body
+    // would fail for that one reason: said first, and alone.
+    if (o.value("bodies").isArray() && o.value("bodies").toArray().isEmpty()) {
+        throw FieldError{"bodies", QStringLiteral("must list at least one body; a scene without a body has nothing "
+                                                  "to simulate")};
+    }
     checkKeys(o, QString(), {"name", "description", "dt", "steps", "integrator", "inertia_convention",
                              "gravity", "bodies", "forces", "torques", "push", "probes", "planes", "box_collisions",
                              "restitution", "restitution_threshold", "friction", "pairs", "position_correction",
@@ -385,25 +444,27 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
             s.planes.push_back(toPlane(planes[i], QStringLiteral("planes[%1]").arg(i)));
         }
     }
+    // Every name below is resolved through one hash map, built once: O(1) a name.
+    const SceneNames names(s);
     if (o.contains("forces")) {
         const QJsonArray forces = toArray(o.value("forces"), "forces");
         for (int i = 0; i < forces.size(); ++i) {
-            s.forces.push_back(toForce(s, forces[i], QStringLiteral("forces[%1]").arg(i)));
+            s.forces.push_back(toForce(names, forces[i], QStringLiteral("forces[%1]").arg(i)));
         }
     }
     if (o.contains("torques")) {
         const QJsonArray torques = toArray(o.value("torques"), "torques");
         for (int i = 0; i < torques.size(); ++i) {
-            s.torques.push_back(toTorque(s, torques[i], QStringLiteral("torques[%1]").arg(i)));
+            s.torques.push_back(toTorque(names, torques[i], QStringLiteral("torques[%1]").arg(i)));
         }
     }
     if (o.contains("push")) {
-        s.push = toPush(s, o.value("push"), "push");
+        s.push = toPush(names, o.value("push"), "push");
     }
     if (o.contains("probes")) {
         const QJsonArray probes = toArray(o.value("probes"), "probes");
         for (int i = 0; i < probes.size(); ++i) {
-            s.probes.push_back(toProbe(s, probes[i], QStringLiteral("probes[%1]").arg(i)));
+            s.probes.push_back(toProbe(names, probes[i], QStringLiteral("probes[%1]").arg(i)));
         }
     }
     if (o.contains("box_collisions")) s.boxCollisions = toBool(o.value("box_collisions"), "box_collisions");
@@ -415,7 +476,7 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
     if (o.contains("pairs")) {
         const QJsonArray pairs = toArray(o.value("pairs"), "pairs");
         for (int i = 0; i < pairs.size(); ++i) {
-            s.pairs.push_back(toPair(s, pairs[i], QStringLiteral("pairs[%1]").arg(i)));
+            s.pairs.push_back(toPair(names, pairs[i], QStringLiteral("pairs[%1]").arg(i)));
         }
     }
     if (o.contains("position_correction")) {
@@ -436,18 +497,18 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
             s.planeContacts = PlaneContactMode::Average;
         } else {
             throw FieldError{"plane_contacts",
-                             QStringLiteral("must be \"per-point\" or \"average\", got \"%1\"").arg(mode)};
+                             QStringLiteral("must be \"per-point\" or \"average\", got \"%1\"").arg(shown(mode))};
         }
     }
     return s;
 }
 
 // 1-based line and column of a byte offset.
-std::pair<int, int> lineColumn(const QByteArray& text, int offset)
+std::pair<qsizetype, qsizetype> lineColumn(const QByteArray& text, qsizetype offset)
 {
-    int line = 1;
-    int column = 1;
-    for (int i = 0; i < offset && i < text.size(); ++i) {
+    qsizetype line = 1;
+    qsizetype column = 1;
+    for (qsizetype i = 0; i < offset && i < text.size(); ++i) {
         if (text[i] == '\n') {
             ++line;
             column = 1;
@@ -458,19 +519,159 @@ std::pair<int, int> lineColumn(const QByteArray& text, int offset)
     return {line, column};
 }
 
-// For an illegal number at `offset`, the same text with that token replaced by a
-// marker string; empty if there is no such token.
-QByteArray markNonFiniteNumber(const QByteArray& json, int offset)
+QString at(const QByteArray& text, qsizetype offset)
 {
-    static const QByteArray chars("+-.0123456789eEINaNnfinity");
-    auto inToken = [&](int i) { return i >= 0 && i < json.size() && chars.contains(json[i]); };
-    int start = inToken(offset) ? offset : offset - 1;
-    if (!inToken(start)) return {};
-    int end = start;
-    while (inToken(start - 1)) --start;
-    while (inToken(end + 1)) ++end;
-    const QByteArray token = json.mid(start, end - start + 1);
-    return json.left(start) + '"' + kNonFinitePrefix.toUtf8() + token + '"' + json.mid(end + 1);
+    const auto [line, column] = lineColumn(text, offset);
+    return QStringLiteral("line %1, column %2").arg(line).arg(column);
+}
+
+// A problem the raw scan finds: its JSON path and the reason.
+struct RawFinding {
+    QString path;
+    QString reason;
+};
+
+bool isBareChar(char c)
+{
+    return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '+' || c == '-' ||
+           c == '.';
+}
+
+// What a bare word that QJsonDocument refused stands for, as a reason; empty if it is
+// something else (a typo such as `tru`), which QJsonDocument's own error describes.
+QString nonFiniteReason(const QByteArray& token)
+{
+    const QByteArray word = token.toLower();
+    if (word == "nan" || word == "-nan" || word == "+nan" || word == "infinity" || word == "-infinity" ||
+        word == "+infinity" || word == "inf" || word == "-inf" || word == "+inf") {
+        return QStringLiteral("must be a finite number, got %1 (not a JSON number: JSON has no literal for a "
+                              "value that is not finite)")
+            .arg(QString::fromLatin1(token));
+    }
+    bool ok = false;
+    token.toDouble(&ok);   // as QJsonDocument reads a number
+    if (ok || token.isEmpty()) {
+        return {};
+    }
+    // A decimal number out of a double's range: read as a long double (locale-free),
+    // whose range reaches 1e4932, it shows which side; beyond that, the exponent's sign.
+    long double x = 0.0L;
+    const char* const last = token.constData() + token.size();
+    const std::from_chars_result r = std::from_chars(token.constData(), last, x);
+    if (r.ptr != last || (r.ec != std::errc() && r.ec != std::errc::result_out_of_range)) {
+        return {};   // not a number at all: QJsonDocument's message
+    }
+    const bool tooLarge = r.ec == std::errc() ? std::abs(x) > std::numeric_limits<double>::max()
+                                              : !word.contains("e-");
+    if (tooLarge) {
+        return QStringLiteral("must be a finite number, got %1 (too large for a double, whose largest value is "
+                              "1.8e308)")
+            .arg(QString::fromLatin1(token));
+    }
+    return QStringLiteral("must be a number a double can hold, got %1 (nearer to 0 than any double but 0; "
+                          "write 0 if 0 is meant)")
+        .arg(QString::fromLatin1(token));
+}
+
+// One pass over the raw bytes, for what QJsonDocument does not say: it keeps the last
+// of two equal keys in an object silently, and reports NaN, Infinity or 1e999 only as
+// "illegal number" at an offset. The scan follows the nesting of objects and arrays,
+// so it names the JSON path of
+//   - a key given twice in one object (compared after unescaping, as QJsonDocument
+//     compares them), and
+//   - with checkNumbers, a bare word that stands for a number a double cannot hold.
+// It stops at the first finding, and looks only at tokens that start before `end`:
+// the text QJsonDocument read without error, which is therefore JSON. Each open
+// object keeps a hash set of its keys, so the scan is linear in the text.
+std::optional<RawFinding> scanJson(const QByteArray& json, qsizetype end, bool checkNumbers)
+{
+    struct Frame {
+        bool object = false;
+        std::string key;                                      // object: the current member's key
+        qsizetype index = 0;                                  // array: the current element
+        bool expectKey = true;                                // object: the next string is a key
+        std::unordered_map<std::string, qsizetype> keys = {}; // object: each key's first offset
+    };
+    std::vector<Frame> stack;
+    auto path = [&stack] {
+        QString p;
+        for (const Frame& f : stack) {
+            if (f.object) {
+                p += (p.isEmpty() ? QString() : QStringLiteral(".")) + shown(QString::fromStdString(f.key));
+            } else {
+                p += QStringLiteral("[%1]").arg(f.index);
+            }
+        }
+        return p;
+    };
+    const char* text = json.constData();
+    const qsizetype size = json.size();
+    qsizetype i = json.startsWith("\xef\xbb\xbf") ? 3 : 0;   // a UTF-8 byte order mark, which QJsonDocument skips
+    while (i < end && i < size) {
+        const char c = text[i];
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == ':') {
+            ++i;
+        } else if (c == '{' || c == '[') {
+            Frame frame;
+            frame.object = c == '{';
+            stack.push_back(std::move(frame));
+            ++i;
+        } else if (c == '}' || c == ']') {
+            if (stack.empty()) return std::nullopt;
+            stack.pop_back();
+            ++i;
+        } else if (c == ',') {
+            if (stack.empty()) return std::nullopt;
+            Frame& f = stack.back();
+            if (f.object) {
+                f.expectKey = true;
+            } else {
+                ++f.index;
+            }
+            ++i;
+        } else if (c == '"') {
+            qsizetype j = i + 1;
+            bool escaped = false;
+            while (j < size && text[j] != '"') {
+                escaped = escaped || text[j] == '\\';
+                j += text[j] == '\\' ? 2 : 1;
+            }
+            if (j >= size) return std::nullopt;
+            if (!stack.empty() && stack.back().object && stack.back().expectKey) {
+                Frame& f = stack.back();
+                f.expectKey = false;
+                // Unescaped by QJsonDocument itself, so "m\u0061ss" is "mass" here too.
+                f.key = escaped ? QJsonDocument::fromJson("[" + json.mid(i, j + 1 - i) + "]")
+                                      .array()
+                                      .at(0)
+                                      .toString()
+                                      .toStdString()
+                                : std::string(text + i + 1, text + j);
+                const auto [first, isNew] = f.keys.emplace(f.key, i);
+                if (!isNew) {
+                    return RawFinding{path(),
+                                      QStringLiteral("duplicate key \"%1\" (first at %2, again at %3); a key may "
+                                                     "appear only once in an object")
+                                          .arg(shown(QString::fromStdString(f.key)), at(json, first->second),
+                                               at(json, i))};
+                }
+            }
+            i = j + 1;
+        } else if (isBareChar(c)) {
+            qsizetype j = i;
+            while (j < size && isBareChar(text[j])) ++j;
+            if (checkNumbers) {
+                const QString reason = nonFiniteReason(json.mid(i, j - i));
+                if (!reason.isEmpty()) {
+                    return RawFinding{path(), reason};
+                }
+            }
+            i = j;
+        } else {
+            return std::nullopt;   // not JSON: QJsonDocument's error says where
+        }
+    }
+    return std::nullopt;
 }
 
 } // namespace
@@ -479,21 +680,23 @@ SceneLoadResult parseScene(const QByteArray& json, const QString& fileLabel)
 {
     SceneLoadResult result;
     QJsonParseError parseError;
-    QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
-    if (parseError.error == QJsonParseError::IllegalNumber) {
-        QJsonParseError second;
-        const QJsonDocument marked = QJsonDocument::fromJson(markNonFiniteNumber(json, parseError.offset), &second);
-        if (second.error == QJsonParseError::NoError) {
-            doc = marked;   // the structural pass below names the field
-            parseError = second;
+    const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
+    const bool parsed = parseError.error == QJsonParseError::NoError;
+    const bool badWord = parseError.error == QJsonParseError::IllegalNumber ||
+                         parseError.error == QJsonParseError::IllegalValue;
+    if (parsed || badWord) {
+        // Duplicate keys in a file that parsed; the field of a NaN or 1e999 where
+        // QJsonDocument stopped (its error offset lies in or after that token).
+        const qsizetype end = parsed ? json.size() : parseError.offset + 1;
+        if (const std::optional<RawFinding> f = scanJson(json, end, badWord)) {
+            result.errors << QStringLiteral("%1: %2: %3").arg(fileLabel, f->path, f->reason);
+            return result;
         }
     }
-    if (parseError.error != QJsonParseError::NoError) {
+    if (!parsed) {
         // QJsonParseError::offset points at (or just after) the offending token.
-        const auto [line, column] = lineColumn(json, parseError.offset);
-        QString reason = QStringLiteral("malformed JSON at line %1, column %2: %3")
-                             .arg(line).arg(column).arg(parseError.errorString());
-        result.errors << QStringLiteral("%1: %2").arg(fileLabel, reason);
+        result.errors << QStringLiteral("%1: malformed JSON at %2: %3")
+                             .arg(fileLabel, at(json, parseError.offset), parseError.errorString());
         return result;
     }
     if (!doc.isObject()) {
@@ -504,10 +707,19 @@ SceneLoadResult parseScene(const QByteArray& json, const QString& fileLabel)
         // Structure first (stops at the first problem), then every rule of the physics
         // (all problems at once), the same validate() a scene built in code goes through.
         SceneDef scene = toScene(doc.object(), fileLabel);
-        for (const SceneIssue& issue : validate(scene)) {
+        const std::vector<SceneIssue> issues = validate(scene);
+        // Every problem, up to a screenful: 100 000 bad bodies need not print 100 000 lines.
+        constexpr std::size_t kShown = 100;
+        for (std::size_t i = 0; i < issues.size() && i < kShown; ++i) {
             result.errors << QStringLiteral("%1: %2: %3")
-                                 .arg(fileLabel, QString::fromStdString(issue.path),
-                                      QString::fromStdString(issue.reason));
+                                 .arg(fileLabel, QString::fromStdString(issues[i].path),
+                                      QString::fromStdString(issues[i].reason));
+        }
+        if (issues.size() > kShown) {
+            result.errors << QStringLiteral("%1: \u2026 and %2 more problems (the first %3 are listed)")
+                                 .arg(fileLabel)
+                                 .arg(issues.size() - kShown)
+                                 .arg(kShown);
         }
         if (result.errors.isEmpty()) {
             result.scene = std::move(scene);
