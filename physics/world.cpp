@@ -1,9 +1,11 @@
 #include "physics/world.h"
 
 #include "physics/integrator_registry.h"
+#include "physics/stages/checks.h"
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 
 namespace rbw {
 
@@ -134,11 +136,38 @@ StepStatus World::step(StepTrace* trace)
     time_ += scene_.dt;
     ++stepIndex_;
     onceForces_.clear();
+    const CheckPoint at{stepIndex_ - 1, false};
+    // t_{k+1} overflows only with dt at the edge of the double range
+    if (status_.ok && !std::isfinite(time_)) {
+        status_ = checkTime(CheckScope{scene_, mass_, conventions_, probeOffsets_B_}, time_, at);
+    }
     if (trace != nullptr) {
         trace->time = time_;
-        if (status_.ok) trace->diagnostics = diagnostics();
+        if (status_.ok) {
+            trace->diagnostics = diagnostics();
+            // Every number the trace holds, then what is computed from the state for it.
+            // (The state itself was checked by the pipeline's finite_check.)
+            const CheckScope scope{scene_, mass_, conventions_, probeOffsets_B_};
+            StepStatus st = checkTrace(scope, *trace, at);
+            if (st.ok) st = checkDerivedOutputs(scope, states_, trace->diagnostics, at);
+            if (!st.ok) status_ = std::move(st);
+        }
     }
     return status_;
+}
+
+StepStatus World::checkOutputs(const Diagnostics& d)
+{
+    if (!status_.ok) return status_;
+    const CheckScope scope{scene_, mass_, conventions_, probeOffsets_B_};
+    const bool initial = stepIndex_ == 0;
+    const CheckPoint at{initial ? 0 : stepIndex_ - 1, initial};
+    StepStatus st = checkMassProperties(scope, at);
+    if (st.ok) st = checkStates(scope, states_, at);
+    if (st.ok) st = checkTime(scope, time_, at);
+    if (st.ok) st = checkDerivedOutputs(scope, states_, d, at);
+    if (!st.ok) status_ = st;
+    return st;
 }
 
 ProbeReading World::probe(int i) const

@@ -69,9 +69,24 @@ public:
     Vec3 worldToBody(int body, const Vec3& p_W) const;
 
     // Advances by one step of size dt. With a trace, records every intermediate
-    // quantity and the diagnostics after the step. After a blow-up the world refuses
-    // to step again and keeps returning the same status.
+    // quantity and the diagnostics after the step, and checks every number it recorded
+    // (each entry, contacts included, and the diagnostics, P = M v per body, the probes):
+    // a non-finite one is a blow-up. Without a trace the step checks the state (x, v, r,
+    // R, L, I^-1, omega) and the time, and nothing else is computed. After a blow-up
+    // the world refuses to step again and keeps returning the same status.
     StepStatus step(StepTrace* trace = nullptr);
+
+    // Checks the current state and everything a view prints from it: I0 and I0^-1, x, v,
+    // r, R, L, I^-1, omega, the time, each body's P = M v, the diagnostics d (as
+    // diagnostics() computes them) and the probes. Before the first step it is the check
+    // of the initial state (reported as such: a non-finite number there always comes
+    // from inputs at the edge of the double range); after step k it names step k. A
+    // front end calls it before it prints the initial state, and after each step it
+    // takes without a trace (a traced step checks itself). On a blow-up it sets
+    // status(), so the world refuses to step, and returns it; after an earlier blow-up
+    // it returns that status.
+    StepStatus checkOutputs(const Diagnostics& d);
+    StepStatus checkOutputs() { return checkOutputs(diagnostics()); }
 
     Diagnostics diagnostics() const;
     ProbeReading probe(int i) const;

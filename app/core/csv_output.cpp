@@ -39,6 +39,11 @@ void CsvWriter::writeHeader(const SceneDef& scene)
 
 void CsvWriter::writeRow(const World& world)
 {
+    writeRow(world, world.diagnostics());
+}
+
+void CsvWriter::writeRow(const World& world, const Diagnostics& d)
+{
     QStringList cells{QString::number(world.stepIndex()), exact(world.time())};
     for (const BodyState& s : world.states()) {
         for (int i = 0; i < 3; ++i) cells << exact(s.x_W[i]);
@@ -46,7 +51,6 @@ void CsvWriter::writeRow(const World& world)
         for (int i = 0; i < 3; ++i) cells << exact(s.v_W[i]);
         for (int i = 0; i < 3; ++i) cells << exact(s.omega_W[i]);
     }
-    const Diagnostics d = world.diagnostics();
     cells << exact(d.kineticTranslational) << exact(d.kineticRotational) << exact(d.potential)
           << exact(d.total);
     out_ << cells.join(',') << '\n';

@@ -15,6 +15,8 @@ public:
     explicit CsvWriter(QTextStream& out) : out_(out) {}
     void writeHeader(const SceneDef& scene);
     void writeRow(const World& world);
+    // The same with the diagnostics already computed (World::checkOutputs(d) checked them).
+    void writeRow(const World& world, const Diagnostics& d);
 
 private:
     QTextStream& out_;

@@ -4,6 +4,7 @@
 #include "physics/inertia.h"
 
 #include <QJsonArray>
+#include <QJsonDocument>
 
 namespace rbw {
 
@@ -110,7 +111,19 @@ QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene)
     };
 }
 
-QJsonObject runToJson(const World& world, const std::vector<StepTrace>& traces, const QString& sceneFile)
+QJsonObject runHeaderToJson(const World& world, const QString& sceneFile)
+{
+    const SceneDef& scene = world.scene();
+    return QJsonObject{
+        {"scene", QString::fromStdString(scene.name)},
+        {"file", sceneFile},
+        {"integrator", QString::fromLatin1(world.integrator().name())},
+        {"inertia_convention", conventionName(scene.inertiaConvention)},
+        {"dt", scene.dt},
+    };
+}
+
+QJsonObject runResultToJson(const World& world)
 {
     const SceneDef& scene = world.scene();
     QJsonArray bodies;
@@ -140,24 +153,27 @@ QJsonObject runToJson(const World& world, const std::vector<StepTrace>& traces, 
             {"velocity", jsonVec3(r.v_W)},
         });
     }
-    QJsonArray traceArray;
-    for (const StepTrace& t : traces) {
-        traceArray.append(traceToJson(t, scene));
-    }
     return QJsonObject{
-        {"scene", QString::fromStdString(scene.name)},
-        {"file", sceneFile},
-        {"integrator", QString::fromLatin1(world.integrator().name())},
-        {"inertia_convention", conventionName(scene.inertiaConvention)},
-        {"dt", scene.dt},
         {"steps", static_cast<qint64>(world.stepIndex())},
         {"time", world.time()},
         {"status", "ok"},
         {"bodies", bodies},
         {"probes", probes},
         {"diagnostics", diagnosticsToJson(world.diagnostics(), &scene)},
-        {"trace", traceArray},
     };
+}
+
+QJsonObject runToJson(const World& world, const std::vector<StepTrace>& traces, const QString& sceneFile)
+{
+    QJsonObject o = runHeaderToJson(world, sceneFile);
+    const QJsonObject result = runResultToJson(world);
+    for (auto it = result.begin(); it != result.end(); ++it) o.insert(it.key(), it.value());
+    QJsonArray traceArray;
+    for (const StepTrace& t : traces) {
+        traceArray.append(traceToJson(t, world.scene()));
+    }
+    o.insert("trace", traceArray);
+    return o;
 }
 
 QJsonObject blowUpToJson(const StepStatus& status, const QString& sceneFile)
@@ -166,12 +182,22 @@ QJsonObject blowUpToJson(const StepStatus& status, const QString& sceneFile)
         {"file", sceneFile},
         {"status", "blow-up"},
         {"step", static_cast<qint64>(status.step)},
-        {"body", QString::fromStdString(status.bodyName)},
+        {"body", status.body >= 0 ? QJsonValue(QString::fromStdString(status.bodyName)) : QJsonValue::Null},
         {"quantity", QString::fromStdString(status.quantity)},
         {"message", QString::fromStdString(status.message)},
+        {"initial_state", status.initialState},
     };
     if (!status.kind.empty()) {
         o.insert("kind", QString::fromStdString(status.kind));
+    }
+    if (status.index >= 0) {
+        o.insert("index", status.index);
+        o.insert("index_kind", QString::fromStdString(status.indexKind));
+    }
+    // A non-finite number: whether the inputs are to blame (stages/checks.h), and which.
+    if (status.kind == "non-finite") {
+        o.insert("inputs_at_edge", status.inputsAtEdge);
+        if (!status.edgeInputs.empty()) o.insert("edge_inputs", QString::fromStdString(status.edgeInputs));
     }
     // An energy jump: T before and after the step and the bound, all finite numbers.
     if (status.kind == "energy-jump") {
@@ -180,6 +206,68 @@ QJsonObject blowUpToJson(const StepStatus& status, const QString& sceneFile)
         o.insert("kinetic_energy_bound", status.kineticBound);
     }
     return o;
+}
+
+namespace {
+
+// The members of an object as an indented document lays them out, without the braces
+// and without a final newline: `    "dt": 0.01,\n    "file": "a.json"`.
+QByteArray membersOf(const QJsonObject& o)
+{
+    if (o.isEmpty()) return {};
+    const QByteArray text = QJsonDocument(o).toJson(QJsonDocument::Indented);
+    // "{\n" + members + "\n}\n"
+    return text.mid(2, text.size() - 2 - 3);
+}
+
+} // namespace
+
+JsonRunWriter::JsonRunWriter(QIODevice& out, const World& world, const QString& sceneFile)
+    : out_(out)
+    , world_(world)
+    , file_(sceneFile)
+{
+}
+
+void JsonRunWriter::begin()
+{
+    out_.write("{\n");
+    out_.write(membersOf(runHeaderToJson(world_, file_)));
+    out_.write(",\n    \"trace\": [");
+}
+
+void JsonRunWriter::addTrace(const StepTrace& trace)
+{
+    // The element as an indented document lays it out, two levels in (8 spaces).
+    QByteArray text = QJsonDocument(traceToJson(trace, world_.scene())).toJson(QJsonDocument::Indented);
+    text.chop(1);   // the final newline
+    text.replace("\n", "\n        ");
+    out_.write(traces_ == 0 ? "\n        " : ",\n        ");
+    out_.write(text);
+    ++traces_;
+}
+
+void JsonRunWriter::closeTrace()
+{
+    out_.write(traces_ == 0 ? "]" : "\n    ]");
+}
+
+void JsonRunWriter::finish()
+{
+    closeTrace();
+    out_.write(",\n");
+    out_.write(membersOf(runResultToJson(world_)));
+    out_.write("\n}\n");
+}
+
+void JsonRunWriter::finishBlowUp(const StepStatus& status)
+{
+    closeTrace();
+    QJsonObject o = blowUpToJson(status, file_);
+    o.remove("file");   // in the header already
+    out_.write(",\n");
+    out_.write(membersOf(o));
+    out_.write("\n}\n");
 }
 
 } // namespace rbw

@@ -7,6 +7,7 @@
 #include "physics/trace.h"
 #include "physics/world.h"
 
+#include <QIODevice>
 #include <QJsonObject>
 #include <QString>
 
@@ -24,6 +25,45 @@ QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene);
 QJsonObject runToJson(const World& world, const std::vector<StepTrace>& traces,
                       const QString& sceneFile);
 
+// Its two halves without the traces: what is known before the first step (scene, file,
+// integrator, inertia_convention, dt) and the result after the last (bodies, probes,
+// diagnostics, status "ok", steps, time).
+QJsonObject runHeaderToJson(const World& world, const QString& sceneFile);
+QJsonObject runResultToJson(const World& world);
+
+// { file, status "blow-up", step, body, quantity, message, kind, initial_state,
+//   inputs_at_edge (and edge_inputs), index and index_kind (a trace entry with an index),
+//   and the kinetic energies of an energy jump }
 QJsonObject blowUpToJson(const StepStatus& status, const QString& sceneFile);
+
+// `rbw run --format json`, written while the run goes, so that memory stays flat with
+// the number of traced steps (docs/cli.md, "Streaming"). One JSON document, with the
+// members of runToJson; only the order of the top-level keys differs:
+//   {  <runHeaderToJson members>,
+//      "trace": [ <traceToJson of each step, written as it is added> ],
+//      <runResultToJson members>                                       (finish)
+//   or <blowUpToJson members but "file">                               (finishBlowUp)  }
+// Each member and each trace element is laid out as QJsonDocument::Indented lays it out
+// in a whole document. Callers write only finite numbers (World::checkOutputs, a traced
+// World::step): QJsonDocument would write a NaN or an infinity as null.
+class JsonRunWriter {
+public:
+    JsonRunWriter(QIODevice& out, const World& world, const QString& sceneFile);
+
+    void begin();                        // "{", the header's members, "trace": [
+    void addTrace(const StepTrace& trace);
+    void finish();                       // "]", the result's members, "}"
+    void finishBlowUp(const StepStatus& status);   // "]", the blow-up's members, "}"
+
+    qint64 tracesWritten() const { return traces_; }
+
+private:
+    void closeTrace();
+
+    QIODevice& out_;
+    const World& world_;
+    QString file_;
+    qint64 traces_ = 0;
+};
 
 } // namespace rbw
