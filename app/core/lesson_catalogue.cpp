@@ -1,5 +1,7 @@
 #include "app/core/lesson_catalogue.h"
 
+#include "app/core/source_root.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
@@ -16,14 +18,18 @@ QString lessonsDirectory()
         return fromEnv;
     }
     if (QCoreApplication::instance() != nullptr) {
+        // Beside or above the executable (an unpacked folder), then the installed
+        // package's data folder (usr/bin/rbw -> usr/share/rigid-body-workbook/lessons).
         const QDir exe(QCoreApplication::applicationDirPath());
-        for (const QString& rel : {QStringLiteral("lessons"), QStringLiteral("../lessons"),
-                                   QStringLiteral("../share/rigid-workbook/lessons")}) {
-            if (QFile::exists(exe.filePath(rel + "/01-one-step/scene.json"))) {
-                return QDir::cleanPath(exe.filePath(rel));
+        const QStringList candidates{exe.filePath(QStringLiteral("lessons")), exe.filePath(QStringLiteral("../lessons")),
+                                     installedDataDirectory() + QStringLiteral("/lessons")};
+        for (const QString& dir : candidates) {
+            if (QFile::exists(dir + QStringLiteral("/01-one-step/scene.json"))) {
+                return QDir::cleanPath(dir);
             }
         }
     }
+    // The source tree the program was built from (a build tree).
     return QStringLiteral(RBW_SOURCE_LESSONS_DIR);
 }
 
@@ -44,7 +50,8 @@ QList<Lesson> lessonCatalogue(const QString& directory)
         // Variants: the folder's other scene files, e.g. 07-bounce/impulses.json.
         const QDir folder(dir.filePath(id));
         for (const QString& variant : folder.entryList({"*.json"}, QDir::Files, QDir::Name)) {
-            if (variant == QLatin1String("scene.json")) {
+            // exercise.json describes new numbers for the lesson (docs/exercises.md), not a scene
+            if (variant == QLatin1String("scene.json") || variant == QLatin1String("exercise.json")) {
                 continue;
             }
             QFile v(folder.filePath(variant));

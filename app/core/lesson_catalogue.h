@@ -1,7 +1,8 @@
 // The lessons: one folder each under lessons/, holding scene.json (whose "name" and
 // "description" give the title and the one-line summary) and lesson.md (what to
 // compute by hand and what to notice). Any other scene file in the folder is a
-// variant of the lesson, listed after it with the id "folder/file" (no ".json"). Folders are listed in name order, so the
+// variant of the lesson, listed after it with the id "folder/file" (no ".json"), except
+// exercise.json (docs/exercises.md). Folders are listed in name order, so the
 // number prefix ("01-one-step") fixes the order.
 #pragma once
 
@@ -19,8 +20,10 @@ struct Lesson {
     bool variant = false;  // another scene file of the lesson's folder; id "folder/file"
 };
 
-// $RBW_LESSONS_DIR if set, else lessons/ beside or above the executable, else the
-// source tree's lessons/.
+// $RBW_LESSONS_DIR if set; else lessons/ beside or above the executable; else the
+// installed package's lessons (<exe>/../share/rigid-body-workbook/lessons, see
+// installedDataDirectory() in source_root.h); else the source tree's lessons/ (a build
+// tree). A folder counts if it holds 01-one-step/scene.json.
 QString lessonsDirectory();
 
 QList<Lesson> lessonCatalogue(const QString& directory = lessonsDirectory());

@@ -4,6 +4,12 @@
 #include <QDir>
 #include <QFileInfo>
 
+// Where the package's data folder is, relative to the folder holding the executables
+// (app/CMakeLists.txt sets it from GNUInstallDirs).
+#ifndef RBW_INSTALL_DATA_FROM_BIN
+#define RBW_INSTALL_DATA_FROM_BIN "../share/rigid-body-workbook"
+#endif
+
 namespace rbw {
 
 namespace {
@@ -20,11 +26,29 @@ QString clean(const QString& dir)
 
 } // namespace
 
+QString installedDataDirectory()
+{
+    if (QCoreApplication::instance() == nullptr) {
+        return {};
+    }
+    return QDir::cleanPath(QCoreApplication::applicationDirPath() + QLatin1Char('/') +
+                           QStringLiteral(RBW_INSTALL_DATA_FROM_BIN));
+}
+
 QString sourceRoot()
 {
     const QString fromEnv = qEnvironmentVariable("RBW_SOURCE_ROOT");
     if (!fromEnv.isEmpty() && QFileInfo(fromEnv).isDir()) {
         return clean(fromEnv);
+    }
+    // An installed program shows its own copy of the sources: the build tree may have
+    // moved on since, and the trace's line numbers are those of the installed build.
+    const QString installedData = installedDataDirectory();
+    if (!installedData.isEmpty()) {
+        const QString installed = installedData + QStringLiteral("/source");
+        if (holdsPhysics(installed)) {
+            return clean(installed);
+        }
     }
 #ifdef RBW_SOURCE_TREE
     const QString built = QStringLiteral(RBW_SOURCE_TREE);
@@ -32,13 +56,6 @@ QString sourceRoot()
         return clean(built);
     }
 #endif
-    if (QCoreApplication::instance() != nullptr) {
-        const QString installed =
-            QCoreApplication::applicationDirPath() + QStringLiteral("/../share/rigid-body-workbook/source");
-        if (holdsPhysics(installed)) {
-            return clean(installed);
-        }
-    }
     return {};
 }
 

@@ -3,6 +3,7 @@
 #include "app/gui/derivation/derivation_page.h"
 #include "app/gui/derivation/standalone_html.h"
 
+#include <QPointer>
 #include <QSaveFile>
 #include <QTimer>
 #include <QUrl>
@@ -30,7 +31,6 @@ DerivationView::DerivationView(QWidget* parent)
     pollTimer_->setInterval(kPollMs);
     connect(pollTimer_, &QTimer::timeout, this, &DerivationView::poll);
     connect(this, &QWebEngineView::loadFinished, this, &DerivationView::onLoadFinished);
-    connect(page(), &QWebEnginePage::pdfPrintingFinished, this, &DerivationView::pdfExported);
 }
 
 void DerivationView::showStep(const QString& html)
@@ -112,7 +112,29 @@ bool DerivationView::exportHtml(const QString& path, QString* error)
 
 void DerivationView::exportPdf(const QString& path)
 {
-    page()->printToPdf(path);
+    // printToPdf(path) would let Chromium write the file in place, so a failure could
+    // leave half a PDF behind. Print to memory instead and write that atomically.
+    const QPointer<DerivationView> self(this);
+    page()->printToPdf([self, path](const QByteArray& pdf) {
+        if (self.isNull()) return;
+        QString error;
+        const bool ok = writePdf(path, pdf, &error);
+        emit self->pdfExported(path, ok, error);
+    });
+}
+
+bool DerivationView::writePdf(const QString& path, const QByteArray& pdf, QString* error)
+{
+    if (pdf.isEmpty()) {
+        if (error != nullptr) *error = QStringLiteral("cannot write %1: printing the page failed").arg(path);
+        return false;
+    }
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(pdf) != pdf.size() || !file.commit()) {
+        if (error != nullptr) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
 }
 
 } // namespace rbw

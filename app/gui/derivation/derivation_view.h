@@ -38,12 +38,18 @@ public:
     // file cannot be written; the file is replaced atomically (QSaveFile).
     bool exportHtml(const QString& path, QString* error);
 
-    // Prints the page to a PDF file; pdfExported(path, ok) follows.
+    // Prints the page (A4 portrait) to memory and writes it with writePdf();
+    // pdfExported(path, ok, error) follows, error empty when ok.
     void exportPdf(const QString& path);
+
+    // Writes a printed PDF atomically (QSaveFile): the file at path is replaced
+    // completely or not at all. False with *error set if pdf is empty (printing
+    // failed) or the file cannot be written.
+    static bool writePdf(const QString& path, const QByteArray& pdf, QString* error);
 
 signals:
     void rendered(int katexCount, int errorCount);
-    void pdfExported(const QString& path, bool ok);
+    void pdfExported(const QString& path, bool ok, const QString& error);
 
 private:
     void onLoadFinished(bool ok);

@@ -7,6 +7,7 @@
 #include <QImage>
 #include <QLineSeries>
 #include <QPainter>
+#include <QSaveFile>
 #include <QTabWidget>
 #include <QTimer>
 #include <QValueAxis>
@@ -164,8 +165,10 @@ bool BodyPlotPanel::exportPng(const QString& path, QString* error)
     QPainter painter(&image);
     view->render(&painter, QRectF(QPointF(0, 0), QSizeF(size)));
     painter.end();
-    if (!image.save(path, "PNG")) {
-        if (error != nullptr) *error = tr("cannot write %1").arg(path);
+    // QSaveFile: the PNG appears complete or not at all.
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit()) {
+        if (error != nullptr) *error = tr("cannot write %1: %2").arg(path, file.errorString());
         return false;
     }
     return true;
