@@ -54,6 +54,7 @@ private slots:
     void stepBackRestoresExactly_data();
     void stepBackRestoresExactly();
     void historyKeeps1000Steps();
+    void stepBackWithManyForces();
     void parameterSwitchKeepsState();
     void badParameterIsRefused();
     void parametersChangedOnlyForParameters();
@@ -121,6 +122,54 @@ void TestSession::historyKeeps1000Steps()
     while (s.stepBack()) ++back;
     QCOMPARE(back, 1000);
     QCOMPARE(s.world()->stepIndex(), 5L);   // the oldest kept state is after step 5
+}
+
+// The history packs each entry's index (which force, probe, contact) as wide as
+// TraceEntry::index: a scene with more forces than an int16 holds (32 767) steps back
+// to exactly the trace it recorded. 40 000 forces of f = (0.5, 0, 0) N through the
+// centre of one box: F = 40 000 * 0.5 = 20 000 N exactly (sums of halves are exact),
+// q = 0, and the trace has one applied_force row per force, index 0 ... 39 999.
+void TestSession::stepBackWithManyForces()
+{
+    constexpr int kForces = 40000;
+    SceneDef scene;
+    scene.name = "many forces";
+    scene.dt = 0.01;
+    BodyDef box;
+    box.name = "box";
+    box.mass = 2.0;
+    scene.bodies.push_back(box);
+    for (int i = 0; i < kForces; ++i) {
+        ForceDef f;
+        f.body = 0;
+        f.p_W = Vec3::Zero();
+        f.f_W = Vec3(0.5, 0, 0);
+        f.fromStep = 0;
+        f.toStep = 1000;
+        scene.forces.push_back(f);
+    }
+    QVERIFY(validate(scene).empty());
+    Session s;
+    s.load(scene);
+    QVERIFY(s.step());
+    QVERIFY(s.step());
+    const StepTrace trace2 = *s.currentTrace();   // step k = 1
+    const TraceEntry* last = trace2.find("applied_force", 0, kForces - 1);
+    QVERIFY(last != nullptr);
+    QVERIFY(trace2.find("applied_force", 0, 32768) != nullptr);   // the first index an int16 wraps
+    const TraceEntry* F = trace2.find("force", 0);
+    QVERIFY(F != nullptr);
+    QCOMPARE(std::get<Vec3>(F->value), Vec3(20000, 0, 0));
+
+    // Forward, back to step 2's state: the packed trace unpacks bit for bit.
+    QVERIFY(s.step());
+    QVERIFY(s.stepBack());
+    QVERIFY2(sameTrace(*s.currentTrace(), trace2), "the trace after step back is not the one recorded");
+    QVERIFY(s.currentTrace()->find("applied_force", 0, kForces - 1) != nullptr);
+    // Back again, and forward: the replayed step 2 gives the same trace (determinism).
+    QVERIFY(s.stepBack());
+    QVERIFY(s.step());
+    QVERIFY(sameTrace(*s.currentTrace(), trace2));
 }
 
 void TestSession::parameterSwitchKeepsState()
@@ -267,13 +316,17 @@ void TestSession::toggleTorques()
 
 void TestSession::blowUpStopsTheRun()
 {
-    // A spinner with v0 = 1e308 and h = 1 overflows x in step 1 (derivation in
-    // tst_invariants.cpp, "runaway velocity").
+    // A box with v0 = (1e8, 0, 0) and h = 1e300 overflows x in step 1: step 0 gives
+    // x = h v0 = 1e308 (finite), step 1 x = 2e308 > DBL_MAX -> +inf. Its energy
+    // T = 1/2 6 (1e8)^2 = 3e16 and momentum stay finite, so only x blows up, and the
+    // recorded step 0 passes every check (v0 = 1e308 with h = 1, as in
+    // tst_invariants' "runaway velocity", has T0 = inf, which a traced step refuses).
     SceneDef scene;
     scene.name = "runaway";
-    scene.dt = 1.0;
+    scene.dt = 1e300;
     scene.bodies.push_back(rbw::test::boxDef("spinner", Vec3(1, 1, 1), 6.0, Vec3::Zero(), Quat::Identity(),
-                                                  Vec3(1e308, 0, 0)));
+                                                  Vec3(1e8, 0, 0)));
+    QVERIFY(validate(scene).empty());
     Session s;
     s.load(scene);
     QSignalSpy blown(&s, &Session::blownUp);

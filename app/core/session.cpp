@@ -38,6 +38,16 @@ const StepTrace* Session::currentTrace() const
     return hasCurrent_ ? &current_ : nullptr;
 }
 
+std::unique_ptr<World> Session::worldBeforeCurrentStep() const
+{
+    if (!world_ || !hasCurrent_ || history_.size() < 2) {
+        return nullptr;
+    }
+    auto before = std::make_unique<World>(edited_);
+    before->restore(history_.at(history_.size() - 2).state);
+    return before;
+}
+
 const StepStatus& Session::status() const
 {
     static const StepStatus none;

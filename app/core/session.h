@@ -39,6 +39,10 @@ public:
     // The trace of the step that produced the current state; nullptr at step 0.
     const StepTrace* currentTrace() const;
     const StepHistory& history() const { return history_; }
+    // The world as it was at the start of the step currentTrace() shows (its state,
+    // restored from the history, in the current parameters), for the checker; nullptr
+    // at step 0 or when the history no longer holds it.
+    std::unique_ptr<World> worldBeforeCurrentStep() const;
 
     // --- parameters: each rebuilds the world from the edited scene and carries the
     // current state over, so the run continues from where it is ---

@@ -51,6 +51,8 @@ public:
     }
 
     const HistoryEntry& back() const { return entries_.back(); }
+    // Entry i, 0 being the oldest kept (i < size()).
+    const HistoryEntry& at(std::size_t i) const { return entries_.at(i); }
     // How many steps back are possible from here.
     std::size_t stepsBackAvailable() const { return entries_.empty() ? 0 : entries_.size() - 1; }
 
