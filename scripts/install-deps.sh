@@ -2,6 +2,9 @@
 # Installs the Debian 12 packages that building and testing Rigid Body Workbook needs,
 # and only those that are missing. Safe to run again: with everything present it
 # touches nothing and does not call apt-get at all.
+#   scripts/install-deps.sh          what the build, the app and the test suite need
+#   scripts/install-deps.sh --fuzz   also clang and libFuzzer, for the fuzz preset
+#                                    (scripts/run-fuzz.sh; the asan preset needs only g++)
 set -euo pipefail
 
 packages=(
@@ -14,7 +17,14 @@ packages=(
   libjs-katex fonts-katex
   libbenchmark-dev
   libgl1-mesa-dri xvfb xauth       # widget and GL tests run under xvfb-run on llvmpipe
+  dpkg-dev desktop-file-utils appstream   # tst_install: dpkg-shlibdeps for cpack's .deb, the validators
 )
+if [ "${1:-}" = "--fuzz" ]; then
+  # clang 16, not Debian's default 14: clang 14 cannot compile libstdc++ 12's
+  # <source_location> (no __builtin_source_location), which the physics uses.
+  # libclang-rt-16-dev (libFuzzer, the sanitizer runtimes) is only a recommendation.
+  packages+=(clang-16 libclang-rt-16-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -2,6 +2,7 @@
 // the state, the diagnostics and the step trace as JSON (or CSV), for scripts,
 // graders and the tests. Exit status: 0 success, 2 bad input, 3 blow-up.
 #include "app/cli/check_command.h"
+#include "app/cli/exercise_command.h"
 #include "app/core/csv_output.h"
 #include "app/core/json_output.h"
 #include "app/core/lesson_catalogue.h"
@@ -15,6 +16,7 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -90,38 +92,71 @@ int runScene(const QCommandLineParser& parser, const QString& sceneFile)
     const QString format = parser.value("format");
     if (format != "json" && format != "csv") return badInput("--format: must be json or csv, got \"" + format + "\"");
     if (format == "csv") traceMode = TraceMode::None;   // CSV prints no trace: do not record one
+    // The overrides obey the scene's own rules (the steps limit, an end time that does
+    // not overflow): validate() again, naming the option.
+    for (const rbw::SceneIssue& issue : rbw::validate(scene)) {
+        const QString field = QString::fromStdString(issue.path);
+        if (field == "steps" && parser.isSet("steps")) return badInput("--steps: " + QString::fromStdString(issue.reason));
+        if (field == "dt" && parser.isSet("dt")) return badInput("--dt: " + QString::fromStdString(issue.reason));
+        return badInput(QString::fromStdString(issue.path + ": " + issue.reason));
+    }
 
     rbw::World world(std::move(scene));
-    rbw::CsvWriter csv(out());
-    if (format == "csv") {
-        csv.writeHeader(world.scene());
-        csv.writeRow(world);
-    }
-    std::vector<rbw::StepTrace> traces;
-    rbw::StepTrace current;
-    bool haveCurrent = false;
     const long steps = world.scene().steps;
-    for (long k = 0; k < steps; ++k) {
-        const rbw::StepStatus status = world.step(traceMode == TraceMode::None ? nullptr : &current);
-        if (!status.ok) {
-            out().flush();
-            err() << "rbw: " << sceneFile << ": " << QString::fromStdString(status.message) << '\n';
-            err().flush();
-            if (format == "json") {
-                out() << QJsonDocument(rbw::blowUpToJson(status, sceneFile)).toJson(QJsonDocument::Indented);
-            }
-            return kExitBlowUp;
-        }
-        haveCurrent = traceMode != TraceMode::None;
-        if (traceMode == TraceMode::All) traces.push_back(current);
-        if (format == "csv") csv.writeRow(world);
-    }
-    if (traceMode == TraceMode::Last && haveCurrent) traces.push_back(current);
+    // A blow-up: the sentence on stderr; with JSON, the document ends with the blow-up
+    // (JsonRunWriter::finishBlowUp) so it stays one valid document.
+    auto blewUp = [&sceneFile](const rbw::StepStatus& status) {
+        out().flush();
+        err() << "rbw: " << sceneFile << ": " << QString::fromStdString(status.message) << '\n';
+        err().flush();
+        return kExitBlowUp;
+    };
 
-    if (format == "json") {
-        out() << QJsonDocument(rbw::runToJson(world, traces, sceneFile)).toJson(QJsonDocument::Indented);
+    if (format == "csv") {
+        // Nothing is printed before the initial state is checked; each row after its check.
+        rbw::Diagnostics d = world.diagnostics();
+        if (const rbw::StepStatus initial = world.checkOutputs(d); !initial.ok) return blewUp(initial);
+        rbw::CsvWriter csv(out());
+        csv.writeHeader(world.scene());
+        csv.writeRow(world, d);
+        for (long k = 0; k < steps; ++k) {
+            rbw::StepStatus status = world.step();
+            if (status.ok) {
+                d = world.diagnostics();
+                status = world.checkOutputs(d);
+            }
+            if (!status.ok) return blewUp(status);
+            csv.writeRow(world, d);
+        }
+        out().flush();
+        return kExitOk;
     }
+
+    // JSON, streamed: the header, then each traced step as it is taken (--trace all:
+    // memory stays flat with the number of steps), then the result or the blow-up.
     out().flush();
+    QFile stdoutFile;
+    if (!stdoutFile.open(stdout, QIODevice::WriteOnly)) return badInput("cannot write to standard output");
+    rbw::JsonRunWriter json(stdoutFile, world, sceneFile);
+    json.begin();
+    auto jsonBlowUp = [&](const rbw::StepStatus& status) {
+        json.finishBlowUp(status);
+        stdoutFile.flush();
+        return blewUp(status);
+    };
+    if (const rbw::StepStatus initial = world.checkOutputs(); !initial.ok) return jsonBlowUp(initial);
+    rbw::StepTrace current;   // reused from step to step: its capacity is kept
+    for (long k = 0; k < steps; ++k) {
+        // A traced step checks every number it records; an untraced one only the state,
+        // so the rest of what the result prints (diagnostics, P, probes) is checked here.
+        rbw::StepStatus status = world.step(traceMode == TraceMode::None ? nullptr : &current);
+        if (status.ok && traceMode == TraceMode::None) status = world.checkOutputs();
+        if (!status.ok) return jsonBlowUp(status);
+        if (traceMode == TraceMode::All) json.addTrace(current);
+    }
+    if (traceMode == TraceMode::Last && steps > 0) json.addTrace(current);
+    json.finish();
+    stdoutFile.flush();
     return kExitOk;
 }
 
@@ -281,7 +316,10 @@ int main(int argc, char* argv[])
         "  check SCENE.json ANSWERS.json [MORE.json ...]\n"
         "                    check a student's numbers for one step (--step K, --tolerance REL,\n"
         "                    --format text|json|csv); exit 0 all correct, 1 some not\n"
-        "  study SCENE.json  every integrator at every dt against the scene's exact answer (CSV)\n\n"
+        "  study SCENE.json  every integrator at every dt against the scene's exact answer (CSV)\n"
+        "  exercise LESSON --seed N\n"
+        "                    the lesson's scene with new numbers (docs/exercises.md); --output FILE,\n"
+        "                    --worksheet F.html, --answer-key F.html, --answers-key F.json\n\n"
         "Exit status: 0 success, 2 bad input (the message names the file, field and reason),\n"
         "3 the simulation blew up (the message names the step, body and quantity).\n\n"
         "Example:\n"
@@ -290,7 +328,7 @@ int main(int argc, char* argv[])
         "  rbw study lessons/10-accuracy-lab/scene.json --integrators explicit-euler,rk4 --dt 0.1,0.01");
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument("command", "run, study, check, lessons, integrators or quantities");
+    parser.addPositionalArgument("command", "run, study, check, exercise, lessons, integrators or quantities");
     parser.addPositionalArgument("scene", "the scene file, for run and study", "[SCENE.json]");
     parser.addOptions({
         {"steps", "Number of steps to take (default: the scene's \"steps\").", "N"},
@@ -303,7 +341,11 @@ int main(int argc, char* argv[])
         {"step", "For check: the step K whose numbers are checked (default: the answers file's \"step\", else 0).", "K"},
         {"tolerance", "For check: relative tolerance of a correct answer (default 1e-3: 4 significant figures).", "REL"},
         {"t-end", "For study: end time T in seconds, the same for every run (default: steps x dt of the scene).", "T"},
-        {"output", "For study: write the CSV to FILE instead of standard output.", "FILE"},
+        {"output", "For study and exercise: write the CSV or the scene to FILE instead of standard output.", "FILE"},
+        {"seed", "For exercise: the seed N of the new numbers (the same seed, the same scene).", "N"},
+        {"worksheet", "For exercise: write the HTML worksheet (setup and an empty answer table) to FILE.", "FILE"},
+        {"answer-key", "For exercise: write the worksheet filled with the workbook's numbers to FILE.", "FILE"},
+        {"answers-key", "For exercise: write the key as an answers file (rbw check accepts it) to FILE.", "FILE"},
     });
     if (!parser.parse(QCoreApplication::arguments())) {
         return badInput(parser.errorText() + " (see rbw --help)");
@@ -333,6 +375,10 @@ int main(int argc, char* argv[])
     if (command == "check") {
         if (args.size() < 3) return badInput("check takes a scene file and at least one answers file (see rbw --help)");
         return rbw::runCheckCommand(parser, args[1], args.mid(2));
+    }
+    if (command == "exercise") {
+        if (args.size() != 2) return badInput("exercise takes exactly one lesson, an id or a folder (see rbw --help)");
+        return rbw::runExerciseCommand(parser, args[1]);
     }
     return badInput("unknown command \"" + args.join(' ') + "\" (see rbw --help)");
 }

@@ -1,8 +1,10 @@
 #include "app/gui/main_window.h"
 
+#include "app/core/exercise.h"
 #include "app/core/focus_filter.h"
 #include "app/core/scene_loader.h"
 #include "app/gui/accuracy/accuracy_panel.h"
+#include "app/gui/check/check_panel.h"
 #include "app/gui/code_view.h"
 #include "app/gui/derivation/derivation_builder.h"
 #include "app/gui/derivation/derivation_view.h"
@@ -24,11 +26,13 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QKeySequence>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QRandomGenerator>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -112,6 +116,7 @@ MainWindow::MainWindow(QWidget* parent)
         bodyPlotPanel_->truncate(static_cast<int>(stepIndex) + 1);
         derivationDirty_ = true;
         traceDirty_ = true;
+        checkDirty_ = true;
     });
     connect(&session_, &Session::stateChanged, this, &MainWindow::onStateChanged);
     connect(&session_, &Session::blownUp, this, &MainWindow::onBlownUp);
@@ -272,6 +277,22 @@ void MainWindow::createActions()
     pushMenu->addActions(pushActions_);
     simMenu->addSeparator();
     simMenu->addActions({previousLesson, nextLesson});
+    // New numbers for practice (docs/exercises.md): the lesson's exercise for a seed.
+    auto* newNumbers = new QAction(tr("&New numbers…"), this);
+    newNumbers->setObjectName("actionNewNumbers");
+    connect(newNumbers, &QAction::triggered, this, [this] {
+        bool ok = false;
+        const QString text = QInputDialog::getText(this, tr("New numbers"), tr("Seed (the same seed gives the same numbers):"),
+                                                   QLineEdit::Normal,
+                                                   QString::number(QRandomGenerator::global()->bounded(1000000)), &ok);
+        if (!ok) return;
+        const quint64 seed = text.trimmed().toULongLong(&ok);
+        QString error;
+        if (!ok) error = tr("The seed must be a whole number, got \"%1\".").arg(text);
+        if (ok) openNewNumbers(seed, &error);
+        if (!error.isEmpty()) QMessageBox::warning(this, tr("New numbers"), error);
+    });
+    simMenu->addAction(newNumbers);
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     viewMenu->addActions({trailsAction_, fit, resetView});
     viewMenu->addSeparator();
@@ -360,6 +381,15 @@ void MainWindow::createDocks()
     connect(derivationDock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible && derivationDirty_) refreshDerivation();
     });
+    // The PDF is printed asynchronously: report the result when it is written.
+    connect(derivationView_, &DerivationView::pdfExported, this,
+            [this](const QString& path, bool ok, const QString& error) {
+                if (ok) {
+                    statusBar()->showMessage(tr("Derivation exported to %1").arg(path), 3000);
+                } else {
+                    QMessageBox::warning(this, tr("Export"), error);
+                }
+            });
 
     plotPanel_ = new PlotPanel;
     plotPanel_->setObjectName("plotPanel");
@@ -400,6 +430,15 @@ void MainWindow::createDocks()
     accuracyDock->setWidget(accuracyScroll);
     addDockWidget(Qt::RightDockWidgetArea, accuracyDock);
     tabifyDockWidget(derivationDock_, accuracyDock);
+
+    // Check my numbers: the student's own numbers for this step, beside the workbook's.
+    checkPanel_ = new CheckPanel;
+    checkPanel_->setObjectName("checkPanel");
+    checkDock_ = new QDockWidget(tr("Check my numbers"), this);
+    checkDock_->setObjectName("checkDock");
+    checkDock_->setWidget(checkPanel_);
+    addDockWidget(Qt::RightDockWidgetArea, checkDock_);
+    tabifyDockWidget(traceDock, checkDock_);
     traceDock->raise();
 
     resizeDocks({lessonsDock, traceDock}, {250, 540}, Qt::Horizontal);
@@ -469,6 +508,31 @@ void MainWindow::onLessonRowChanged(int row)
     setWindowTitle(tr("%1 — Rigid Body Workbook").arg(currentLesson_.title));
 }
 
+bool MainWindow::openNewNumbers(quint64 seed, QString* error)
+{
+    const QString lessonId = currentLesson_.variant ? currentLesson_.id.section('/', 0, 0) : currentLesson_.id;
+    const ExerciseLoadResult spec = loadExercise(QFileInfo(currentLesson_.scenePath).absolutePath());
+    GeneratedExercise generated;
+    if (spec.ok()) generated = generateExercise(*spec.spec, seed);
+    if (!spec.ok() || !generated.ok()) {
+        if (error != nullptr) {
+            *error = spec.ok() ? generated.errors.join('\n')
+                               : tr("This lesson has no new numbers.\n\n%1").arg(spec.errors.join('\n'));
+        }
+        return false;
+    }
+    setPlaying(false);
+    alertLabel_->hide();
+    focusBody_ = -1;
+    currentLesson_.title = tr("Lesson %1, new numbers (seed %2)").arg(lessonId.section('-', 0, 0).toInt()).arg(seed);
+    session_.load(*generated.scene);   // -> onSessionReset, onStateChanged
+    accuracyPanel_->setScene(*generated.scene, currentLesson_.id);
+    sceneView_->resetView();
+    setWindowTitle(tr("%1 — Rigid Body Workbook").arg(currentLesson_.title));
+    statusBar()->showMessage(tr("New numbers: seed %1").arg(seed));
+    return true;
+}
+
 void MainWindow::resetLesson()
 {
     setPlaying(false);
@@ -489,6 +553,7 @@ void MainWindow::onSessionReset()
     bodyPlotPanel_->appendStep(session_.world()->time(), session_.world()->diagnostics());
     derivationDirty_ = true;
     traceDirty_ = true;
+    checkDirty_ = true;
 }
 
 void MainWindow::onStepRecorded(const StepTrace& trace)
@@ -497,6 +562,7 @@ void MainWindow::onStepRecorded(const StepTrace& trace)
     bodyPlotPanel_->appendStep(trace.time, trace.diagnostics);
     derivationDirty_ = true;
     traceDirty_ = true;
+    checkDirty_ = true;
 }
 
 void MainWindow::onStateChanged()
@@ -514,6 +580,8 @@ void MainWindow::onStateChanged()
         else traceModel_->clear();
         traceDirty_ = false;
     }
+    // The check table rebuilds a world for the step's start: only when paused.
+    if (checkDirty_ && !playing) updateCheckPanel();
     // The typeset page follows when the run pauses: typesetting at every frame would
     // cost more than the step itself.
     if (derivationDirty_ && PlaybackClock::derivationDue(playing)) refreshDerivation();
@@ -525,6 +593,14 @@ void MainWindow::onStateChanged()
         updateStatus();
         clock_.panelsRefreshed();
     }
+}
+
+void MainWindow::updateCheckPanel()
+{
+    if (!session_.isLoaded()) return;
+    checkPanel_->setStep(currentLesson_.id, session_.worldBeforeCurrentStep(), session_.currentTrace(),
+                         session_.world()->scene());
+    checkDirty_ = false;
 }
 
 void MainWindow::refreshDerivation()

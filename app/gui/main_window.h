@@ -27,6 +27,7 @@ namespace rbw {
 
 class AccuracyPanel;
 class BodyPlotPanel;
+class CheckPanel;
 class CodeView;
 class DerivationView;
 class ParameterBar;
@@ -42,6 +43,9 @@ public:
 
     // Opens a lesson by folder id ("01-one-step"); false if it cannot be loaded.
     bool openLesson(const QString& id);
+    // The current lesson's scene with new numbers for a seed (exercise.json,
+    // docs/exercises.md), loaded in memory; false with the reason if it has none.
+    bool openNewNumbers(quint64 seed, QString* error = nullptr);
     QString currentLessonId() const { return currentLesson_.id; }
     const QList<Lesson>& lessons() const { return lessons_; }
     TraceModel* traceModel() const { return traceModel_; }
@@ -60,6 +64,7 @@ public:
     double playbackSpeed() const { return clock_.speed(); }
     ParameterBar* parameterBar() const { return parameterBar_; }
     CodeView* codeView() const { return codeView_; }
+    CheckPanel* checkPanel() const { return checkPanel_; }
 
 public slots:
     void stepOnce();
@@ -89,6 +94,7 @@ private:
     void onPlayTick();
     void updateStatus();
     void updateActions();
+    void updateCheckPanel();
     void exportDerivationHtml();
     void exportDerivationPdf();
     void addPushAction(const QString& text, const QKeySequence& key, const Vec3& direction);
@@ -113,12 +119,15 @@ private:
     CodeView* codeView_ = nullptr;
     QDockWidget* codeDock_ = nullptr;
     ParameterBar* parameterBar_ = nullptr;
+    CheckPanel* checkPanel_ = nullptr;   // Check my numbers
+    QDockWidget* checkDock_ = nullptr;
 
     QTimer* playTimer_ = nullptr;
     PlaybackClock clock_;            // steps per tick, and when the panels are due
     int focusBody_ = -1;             // the body last grabbed: a many-body derivation follows it
     bool derivationDirty_ = false;   // the page does not show the current step yet
     bool traceDirty_ = false;        // nor does the quantities table
+    bool checkDirty_ = false;        // nor does Check my numbers (it follows when paused)
     QString derivationHtml_;
 
     QList<QAction*> shortcutActions_;
