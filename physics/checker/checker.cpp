@@ -56,7 +56,6 @@ Mat3 mat(const Values& v)
     return m;
 }
 Values flatVec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-Values flatMat(const Mat3& m) { return flat(TraceValue(m)); }
 
 double maxAbs(const Values& v)
 {
