@@ -37,7 +37,9 @@ const QString kLabel = QStringLiteral("fuzz.json");
 
 bool checkFinite()
 {
-    static const bool on = qEnvironmentVariableIntValue("RBW_FUZZ_CHECK_FINITE") != 0;
+    // On unless RBW_FUZZ_CHECK_FINITE=0.
+    static const bool on = !qEnvironmentVariableIsSet("RBW_FUZZ_CHECK_FINITE") ||
+                           qEnvironmentVariableIntValue("RBW_FUZZ_CHECK_FINITE") != 0;
     return on;
 }
 

@@ -20,9 +20,9 @@ inline constexpr long kMaxSteps = 4;
 // without a message or whose message does not name the file, a loaded scene that
 // validate() refuses, a blow-up without a message, a JSON document that is not one
 // object; so do the sanitizers and the assertions (World asserts a valid scene).
-// With the environment variable RBW_FUZZ_CHECK_FINITE=1 it also aborts on a NaN or an
-// infinity in what the run prints: the result, the trace, the blow-up report, the CSV
-// rows (README: "No NaN is ever printed as a result").
+// It also aborts on a NaN or an infinity in what the run prints: the result, the last
+// trace, the blow-up report, the CSV rows (README: "No NaN is ever printed as a
+// result"); RBW_FUZZ_CHECK_FINITE=0 turns that check off.
 // The loader gets a '\0'-terminated copy of the bytes, as from QFile::readAll(); with
 // RBW_FUZZ_RAW_BYTES=1 it gets them unterminated (QByteArray::fromRawData), which
 // checks that it reads nothing past QByteArray::size().

@@ -555,9 +555,13 @@ QString nonFiniteReason(const QByteArray& token)
     }
     // A decimal number out of a double's range: read as a long double (locale-free),
     // whose range reaches 1e4932, it shows which side; beyond that, the exponent's sign.
+    // libstdc++ 12's from_chars for long double runs strlen over its input for a word
+    // that starts like "-Inf" (a fuzz finding, docs/reliability.md): give it its own
+    // '\0'-terminated copy, whatever the token's buffer holds after its end.
+    const std::string text(token.constData(), static_cast<std::size_t>(token.size()));
     long double x = 0.0L;
-    const char* const last = token.constData() + token.size();
-    const std::from_chars_result r = std::from_chars(token.constData(), last, x);
+    const char* const last = text.data() + text.size();
+    const std::from_chars_result r = std::from_chars(text.data(), last, x);
     if (r.ptr != last || (r.ec != std::errc() && r.ec != std::errc::result_out_of_range)) {
         return {};   // not a number at all: QJsonDocument's message
     }
