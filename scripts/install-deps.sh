@@ -16,6 +16,7 @@ packages=(
   qt6-webengine-dev
   libjs-katex fonts-katex
   libbenchmark-dev
+  libbullet-dev                    # bench/bench_contact.cpp: the box rain in Bullet 3.24 beside ours
   libgl1-mesa-dri xvfb xauth       # widget and GL tests run under xvfb-run on llvmpipe
   dpkg-dev desktop-file-utils appstream   # tst_install: dpkg-shlibdeps for cpack's .deb, the validators
 )

@@ -96,4 +96,133 @@ void SweepAndPrune::findPairs(const std::vector<Aabb>& boxes, const std::vector<
     stats.pairsOverlapping = static_cast<long>(pairs.size());
 }
 
+namespace {
+
+constexpr int kLeafSize = 2;   // boxes per leaf of the AABB tree
+
+// The AABB that holds a and b.
+Aabb merged(const Aabb& a, const Aabb& b)
+{
+    return Aabb{a.min_W.cwiseMin(b.min_W), a.max_W.cwiseMax(b.max_W)};
+}
+
+} // namespace
+
+void AabbTree::findPairs(const std::vector<Aabb>& boxes, const std::vector<char>& movable,
+                         std::vector<std::pair<int, int>>& pairs, BroadPhaseStats& stats)
+{
+    assert(movable.size() == boxes.size());
+    pairs.clear();
+    stats = BroadPhaseStats{};
+    nodes_.clear();
+    const int n = static_cast<int>(boxes.size());
+    if (n < 2) return;
+    index_.resize(static_cast<std::size_t>(n));
+    centres_W_.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        index_[static_cast<std::size_t>(i)] = i;
+        // the sort key of a box: its AABB's centre (min + max) / 2
+        centres_W_[static_cast<std::size_t>(i)] =
+            0.5 * (boxes[static_cast<std::size_t>(i)].min_W + boxes[static_cast<std::size_t>(i)].max_W);
+    }
+    boxes_ = &boxes;
+    movable_ = &movable;
+    pairs_ = &pairs;
+    stats_ = &stats;
+    nodes_.reserve(static_cast<std::size_t>(2 * n));
+    const int root = build(boxes, 0, n);
+    selfPairs(root);
+    std::sort(pairs.begin(), pairs.end());
+    stats.pairsOverlapping = static_cast<long>(pairs.size());
+}
+
+int AabbTree::build(const std::vector<Aabb>& boxes, int first, int count)
+{
+    const int id = static_cast<int>(nodes_.size());
+    nodes_.emplace_back();
+    Aabb box = boxes[static_cast<std::size_t>(index_[static_cast<std::size_t>(first)])];
+    Vec3 lo_W = centres_W_[static_cast<std::size_t>(index_[static_cast<std::size_t>(first)])];
+    Vec3 hi_W = lo_W;
+    for (int k = first + 1; k < first + count; ++k) {
+        const int i = index_[static_cast<std::size_t>(k)];
+        box = merged(box, boxes[static_cast<std::size_t>(i)]);
+        lo_W = lo_W.cwiseMin(centres_W_[static_cast<std::size_t>(i)]);
+        hi_W = hi_W.cwiseMax(centres_W_[static_cast<std::size_t>(i)]);
+    }
+    nodes_[static_cast<std::size_t>(id)].box = box;
+    if (count <= kLeafSize) {
+        nodes_[static_cast<std::size_t>(id)].first = first;
+        nodes_[static_cast<std::size_t>(id)].count = count;
+        return id;
+    }
+    // Split at the median centre along the longest side of the centres' bounds; ties
+    // broken by index, so the tree does not depend on the sort's implementation.
+    int axis = 0;
+    const Vec3 extent_W = hi_W - lo_W;
+    if (extent_W.y() > extent_W[axis]) axis = 1;
+    if (extent_W.z() > extent_W[axis]) axis = 2;
+    const int half = count / 2;
+    const auto begin = index_.begin() + first;
+    std::nth_element(begin, begin + half, begin + count, [this, axis](int a, int b) {
+        const double ka = centres_W_[static_cast<std::size_t>(a)][axis];
+        const double kb = centres_W_[static_cast<std::size_t>(b)][axis];
+        return ka < kb || (ka == kb && a < b);
+    });
+    const int left = build(boxes, first, half);
+    const int right = build(boxes, first + half, count - half);
+    nodes_[static_cast<std::size_t>(id)].left = left;
+    nodes_[static_cast<std::size_t>(id)].right = right;
+    return id;
+}
+
+void AabbTree::testLeaves(const Node& a, const Node& b)
+{
+    for (int x = a.first; x < a.first + a.count; ++x) {
+        const int i = index_[static_cast<std::size_t>(x)];
+        // Within one leaf, each pair once.
+        const int yFirst = (&a == &b) ? x + 1 : b.first;
+        for (int y = yFirst; y < b.first + b.count; ++y) {
+            const int j = index_[static_cast<std::size_t>(y)];
+            if (!(*movable_)[static_cast<std::size_t>(i)] && !(*movable_)[static_cast<std::size_t>(j)]) continue;
+            ++stats_->pairsTested;
+            if (aabbOverlap((*boxes_)[static_cast<std::size_t>(i)], (*boxes_)[static_cast<std::size_t>(j)])) {
+                pairs_->emplace_back(std::min(i, j), std::max(i, j));
+            }
+        }
+    }
+}
+
+void AabbTree::selfPairs(int node)
+{
+    const Node& nd = nodes_[static_cast<std::size_t>(node)];
+    if (nd.left < 0) {
+        testLeaves(nd, nd);
+        return;
+    }
+    selfPairs(nd.left);
+    selfPairs(nd.right);
+    crossPairs(nd.left, nd.right);
+}
+
+void AabbTree::crossPairs(int a, int b)
+{
+    const Node& na = nodes_[static_cast<std::size_t>(a)];
+    const Node& nb = nodes_[static_cast<std::size_t>(b)];
+    if (!aabbOverlap(na.box, nb.box)) return;
+    if (na.left < 0 && nb.left < 0) {
+        testLeaves(na, nb);
+        return;
+    }
+    // Descend the larger volume (Ericson 6.3.3); a leaf is never descended.
+    const double volA = (na.box.max_W - na.box.min_W).prod();
+    const double volB = (nb.box.max_W - nb.box.min_W).prod();
+    if (nb.left < 0 || (na.left >= 0 && volA >= volB)) {
+        crossPairs(na.left, b);
+        crossPairs(na.right, b);
+    } else {
+        crossPairs(a, nb.left);
+        crossPairs(a, nb.right);
+    }
+}
+
 } // namespace rbw

@@ -72,4 +72,41 @@ private:
     std::vector<int> order_;
 };
 
+// The manifold model's broad phase: a bounding-volume tree over the AABBs, rebuilt in
+// every call (top down, each node split at the median centre along the longest side of
+// its centres' bounds; Ericson 6.2.1), and the tree tested against itself (Ericson
+// 6.3.3, "descend the larger volume"): two subtrees are compared only when their
+// bounds overlap, so a pile of n boxes costs about n log n node tests and a few box
+// tests per box, where sweep and prune along one axis tests every box against every
+// other box of its slab (a 10 x 10 x 10 pile: ~50 000 pair tests, docs/collisions.md).
+// The output is the same as SweepAndPrune's: every overlapping pair with a movable box,
+// each once, sorted by (i, j). pairsTested counts the box-box AABB tests.
+class AabbTree {
+public:
+    void findPairs(const std::vector<Aabb>& boxes, const std::vector<char>& movable,
+                   std::vector<std::pair<int, int>>& pairs, BroadPhaseStats& stats);
+
+private:
+    struct Node {
+        Aabb box;
+        int left = -1;    // children (-1 for a leaf)
+        int right = -1;
+        int first = 0;    // a leaf's boxes: index_[first .. first + count - 1]
+        int count = 0;
+    };
+    int build(const std::vector<Aabb>& boxes, int first, int count);
+    void selfPairs(int node);
+    void crossPairs(int a, int b);
+    void testLeaves(const Node& a, const Node& b);
+
+    std::vector<Node> nodes_;
+    std::vector<int> index_;
+    std::vector<Vec3> centres_W_;
+    // Of the current call:
+    const std::vector<Aabb>* boxes_ = nullptr;
+    const std::vector<char>* movable_ = nullptr;
+    std::vector<std::pair<int, int>>* pairs_ = nullptr;
+    BroadPhaseStats* stats_ = nullptr;
+};
+
 } // namespace rbw

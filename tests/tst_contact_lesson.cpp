@@ -1,0 +1,62 @@
+// Lesson 11 (issue 11): its one derivation template serves both of its scenes, the
+// manifold model (scene.json) and the course model (course.json): at the first contact
+// and a second later every placeholder finds its number, the template has no error,
+// and each model's own rows appear (the control: the other model's rows do not).
+#include "app/core/scene_loader.h"
+#include "app/gui/derivation/derivation_builder.h"
+#include "physics/world.h"
+
+#include <QtTest>
+
+namespace {
+
+const QString kLesson = QStringLiteral(RBW_SOURCE_DIR "/lessons/11-resting-contact");
+
+rbw::SceneDef load(const QString& file)
+{
+    const rbw::SceneLoadResult r = rbw::loadSceneFile(kLesson + QLatin1Char('/') + file);
+    if (!r.ok()) qFatal("%s", qPrintable(r.errors.join('\n')));
+    return *r.scene;
+}
+
+} // namespace
+
+class TestContactLesson : public QObject {
+    Q_OBJECT
+
+private slots:
+    void derivationForBothModels_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("ownRow");
+        QTest::addColumn<QString>("otherRow");
+        QTest::newRow("manifold") << "scene.json" << "feature id" << "lesson 3 derives it";
+        QTest::newRow("course") << "course.json" << "lesson 3 derives it" << "feature id";
+    }
+
+    void derivationForBothModels()
+    {
+        QFETCH(QString, file);
+        QFETCH(QString, ownRow);
+        QFETCH(QString, otherRow);
+        const rbw::SceneDef scene = load(file);
+        rbw::World w(scene);
+        rbw::StepTrace t;
+        int withContacts = 0;
+        for (int k = 0; k < 90; ++k) {
+            QVERIFY(w.step(&t).ok);
+            if (t.contacts.empty() || (k != 30 && k != 89 && withContacts > 0)) continue;
+            ++withContacts;
+            const rbw::DerivationDocument doc = rbw::buildLessonDerivation(t, scene, kLesson);
+            QVERIFY2(!doc.fallback, qPrintable(doc.errors.join('\n')));
+            QVERIFY2(doc.errors.isEmpty(), qPrintable(doc.errors.join('\n')));
+            QVERIFY2(doc.notes.isEmpty(), qPrintable(doc.notes.join('\n')));
+            QVERIFY(doc.html.contains(ownRow));
+            QVERIFY(!doc.html.contains(otherRow));
+        }
+        QVERIFY(withContacts >= 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestContactLesson)
+#include "tst_contact_lesson.moc"
