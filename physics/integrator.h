@@ -74,12 +74,14 @@ public:
     // omega_W consistent with the new state.
     void integrate(const IntegrationInput& in, std::vector<BodyState>& states, StepTrace* trace) const;
 
-protected:
     // What the base derives after advance(): from the orientation quaternion r (R, I^-1
     // and omega), or from the rotation matrix R that advance() left as the state (I^-1
-    // and omega only: the rotation-matrix integrators).
+    // and omega only: the rotation-matrix integrators). Public so that a derivation can
+    // write out the rows the base adds.
     enum class Derived { FromQuaternion, FromMatrix };
     virtual Derived derivedFrom() const { return Derived::FromQuaternion; }
+
+protected:
     // One body's update of x, v, r (or R) and L, with its own trace rows.
     virtual void advance(const BodyStep& step, BodyState& s) const = 0;
 };

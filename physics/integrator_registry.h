@@ -14,7 +14,11 @@ struct IntegratorInfo {
     const char* name;
     const char* summary;   // one line: method, order, source
     int order = 1;         // global order of accuracy: error ~ h^order (measured in tests/integrators)
+    const char* title = "";   // for headings: "classical Runge-Kutta (RK4)"
 };
+
+// The catalogue's entry for this name; nullptr if the name is unknown.
+const IntegratorInfo* findIntegrator(std::string_view name);
 
 // In the order `rbw integrators` lists them: explicit-euler first.
 const std::vector<IntegratorInfo>& integratorCatalogue();

@@ -1,5 +1,7 @@
 #include "physics/scene.h"
 
+#include "physics/contact/settings.h"
+
 #include "physics/integrator_registry.h"
 
 #include <algorithm>
@@ -586,6 +588,7 @@ std::vector<SceneIssue> validate(const SceneDef& scene)
                                                  num(scene.energyJumpFactor)});
     }
     checkCoefficient(out, "energy_jump.floor", scene.energyJumpFloor, kNoLimit);
+    checkContactModel(out, scene);
     return out;
 }
 

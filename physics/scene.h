@@ -76,6 +76,22 @@ struct ProbeDef {
 // turn, or one impulse at their average point (the Napier assessment's method).
 enum class PlaneContactMode { PerPoint, Average };
 
+// Which contact model a scene runs (docs/collisions.md):
+//   Course    the course's single point per pair and one impulse per contact per step
+//             (TUM SAT, Napier corners), resolved once in a fixed order;
+//   Manifold  contact manifolds (box-box face clipping, every box corner at a plane)
+//             and a sequential-impulse solver with accumulated, clamped impulses, warm
+//             starting, a position fix that adds no energy and sleeping (physics/contact/).
+enum class ContactModel { Course, Manifold };
+
+// How the manifold model removes overlap (ManifoldSettings::positionFix):
+//   Ngs        non-linear Gauss-Seidel on the positions after the integration (Box2D's
+//              SolvePositionConstraints): changes x and r only, never v or L;
+//   Baumgarte  a velocity bias beta/h * overlap in the velocity solve (Catto 2005): adds
+//              kinetic energy, kept for comparison;
+//   None       no position fix at all.
+enum class PositionFix { Ngs, Baumgarte, None };
+
 // Per-pair overrides of the scene-wide restitution and friction. B is a body, or a
 // plane when planeB >= 0. A pair overrides at least one of the two, names two
 // different bodies (or a body and a plane) and is listed once (validate()).
@@ -115,6 +131,16 @@ struct SceneDef {
     std::vector<PairOverride> pairs;
     bool positionCorrection = false;       // push penetrating bodies apart after the impulses
     PlaneContactMode planeContacts = PlaneContactMode::PerPoint;
+
+    // The contact model (docs/collisions.md). The keys below belong to the manifold
+    // model; a course scene leaves them unset (validate() refuses them there).
+    ContactModel contactModel = ContactModel::Course;
+    std::optional<long> solverIterations = std::nullopt;  // velocity iterations; none: 10
+    std::optional<bool> sleep = std::nullopt;             // bodies at rest sleep; none: true
+    std::optional<PositionFix> positionFix = std::nullopt;   // none: Ngs
+    int solverIterationsOr() const { return static_cast<int>(solverIterations.value_or(10)); }
+    bool sleepOr() const { return sleep.value_or(true); }
+    PositionFix positionFixOr() const { return positionFix.value_or(PositionFix::Ngs); }
 
     // Energy-jump blow-up detection (World::step, docs/stability.md): a step stops the
     // run when a body's kinetic energy after the integration exceeds

@@ -1,5 +1,7 @@
 #include "physics/trace.h"
 
+#include "physics/quantities.h"
+
 namespace rbw {
 
 const char* stageName(Stage s)
@@ -69,6 +71,58 @@ const TraceEntry* StepTrace::find(std::string_view id, int body, int index) cons
         }
     }
     return nullptr;
+}
+
+namespace {
+
+// The state fields a start-of-step value is read from, by the catalogue's ids.
+enum class StartField { None, X, V, R, L, RotationMatrix, Iinv, Omega, ProbeP, ProbeV };
+
+StartField startField(std::string_view id)
+{
+    if (id == q::position.id) return StartField::X;
+    if (id == q::linear_velocity.id) return StartField::V;
+    if (id == q::orientation.id) return StartField::R;
+    if (id == q::angular_momentum.id) return StartField::L;
+    if (id == q::rotation_matrix.id) return StartField::RotationMatrix;
+    if (id == q::inverse_inertia_world.id) return StartField::Iinv;
+    if (id == q::angular_velocity.id) return StartField::Omega;
+    if (id == q::probe_position.id) return StartField::ProbeP;
+    if (id == q::point_velocity.id) return StartField::ProbeV;
+    return StartField::None;
+}
+
+} // namespace
+
+bool hasStartValue(std::string_view id)
+{
+    return startField(id) != StartField::None;
+}
+
+bool startValue(const StepTrace& trace, std::string_view id, int body, int index, TraceValue* out)
+{
+    const StartField f = startField(id);
+    if (f == StartField::ProbeP || f == StartField::ProbeV) {
+        if (index < 0 || index >= static_cast<int>(trace.start.probes.size())) return false;
+        const ProbeSample& p = trace.start.probes[static_cast<size_t>(index)];
+        if (p.body != body) return false;
+        *out = f == StartField::ProbeP ? p.p_W : p.v_W;
+        return true;
+    }
+    if (f == StartField::None || index != -1 || body < 0 || body >= static_cast<int>(trace.start.bodies.size())) {
+        return false;
+    }
+    const BodyState& s = trace.start.bodies[static_cast<size_t>(body)];
+    switch (f) {
+    case StartField::X: *out = s.x_W; return true;
+    case StartField::V: *out = s.v_W; return true;
+    case StartField::R: *out = s.q_WB; return true;
+    case StartField::L: *out = s.L_W; return true;
+    case StartField::RotationMatrix: *out = s.R_WB; return true;
+    case StartField::Iinv: *out = s.Iinv_W; return true;
+    case StartField::Omega: *out = s.omega_W; return true;
+    default: return false;
+    }
 }
 
 } // namespace rbw

@@ -75,17 +75,36 @@ struct ContactHeader {
     bool separating = false;   // v_rel . n > 0: no impulse was applied
 };
 
+// A probe point read at the start of the step: p = x + R p_B, v_p = v + omega x (p - x).
+struct ProbeSample {
+    int body = -1;
+    Vec3 p_W = Vec3::Zero();
+    Vec3 v_W = Vec3::Zero();
+};
+
+// The state at the start of the step (t_k), the numbers a hand calculation of the step
+// starts from: every body's x, v, r, L and the derived R, I^-1 and omega, and every
+// probe point. World::step() copies it before the pipeline runs, only with a trace.
+// It is not an entry list: entries are what the step computed, this is what it read.
+struct StartOfStep {
+    std::vector<BodyState> bodies;    // indexed like the world's bodies
+    std::vector<ProbeSample> probes;  // indexed like SceneDef::probes
+};
+
 struct StepTrace {
     long step = 0;        // k: this step advances t_k = k h to t_{k+1}
     double time = 0.0;    // t_{k+1}, the time at the end of the step
     std::vector<TraceEntry> entries;
     std::vector<ContactHeader> contacts;
     Diagnostics diagnostics;   // after the step
+    StartOfStep start;         // before the step
 
     void clear()
     {
         entries.clear();
         contacts.clear();
+        start.bodies.clear();
+        start.probes.clear();
         step = 0;
         time = 0.0;
         diagnostics = Diagnostics{};
@@ -100,6 +119,15 @@ struct StepTrace {
     // The first entry with this id for this body (and index); nullptr if none.
     const TraceEntry* find(std::string_view id, int body, int index = -1) const;
 };
+
+// The value of a state quantity at the start of the step, for the rows that have one:
+// position (x), linear_velocity (v), orientation (r), angular_momentum (L),
+// rotation_matrix (R), inverse_inertia_world (I^-1), angular_velocity (omega) of a
+// body, and probe_position (p) and point_velocity (v_p) of probe `index`. False for
+// any other id, or when the trace holds no start state (an empty trace).
+bool startValue(const StepTrace& trace, std::string_view id, int body, int index, TraceValue* out);
+// Whether the quantity with this id has a start-of-step value at all.
+bool hasStartValue(std::string_view id);
 
 // Records into a trace only when one is given: `record(trace, q::force, b, F)`, on the
 // line that computes the value (its source location is the entry's `where`).

@@ -110,7 +110,7 @@ StepContext World::context(StepTrace* trace)
                        torqueEnabled_, states_, loads_,       scratch_, trace,           stepIndex_, status_};
 }
 
-StepStatus World::step(StepTrace* trace)
+const StepStatus& World::step(StepTrace* trace)
 {
     if (!status_.ok) {
         return status_;
@@ -118,6 +118,13 @@ StepStatus World::step(StepTrace* trace)
     if (trace != nullptr) {
         trace->clear();
         trace->step = stepIndex_;
+        // The state at t_k, which the step starts from (StepTrace::start).
+        trace->start.bodies = states_;
+        trace->start.probes.resize(scene_.probes.size());
+        for (int i = 0; i < static_cast<int>(scene_.probes.size()); ++i) {
+            const ProbeReading r = readProbe(scene_, states_, probeOffsets_B_, i);
+            trace->start.probes[static_cast<size_t>(i)] = ProbeSample{r.body, r.p_W, r.v_W};
+        }
     }
     // A new step's loads and scratch.
     std::fill(loads_.begin(), loads_.end(), BodyLoad{});

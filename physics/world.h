@@ -74,7 +74,9 @@ public:
     // a non-finite one is a blow-up. Without a trace the step checks the state (x, v, r,
     // R, L, I^-1, omega) and the time, and nothing else is computed. After a blow-up
     // the world refuses to step again and keeps returning the same status.
-    StepStatus step(StepTrace* trace = nullptr);
+    // The status after the step (status()), by reference: a StepStatus holds strings,
+    // and copying it every step was a tenth of a free body's step.
+    const StepStatus& step(StepTrace* trace = nullptr);
 
     // Checks the current state and everything a view prints from it: I0 and I0^-1, x, v,
     // r, R, L, I^-1, omega, the time, each body's P = M v, the diagnostics d (as
@@ -101,7 +103,8 @@ public:
 
     bool runsCollisionStage() const
     {
-        return runsStage(PipelineStage::BoxBox) || runsStage(PipelineStage::BoxPlane);
+        return runsStage(PipelineStage::BoxBox) || runsStage(PipelineStage::BoxPlane) ||
+               runsStage(PipelineStage::ManifoldContacts);
     }
     // The broad phase's counts in the last step (zero when it did not run).
     const BroadPhaseStats& lastBroadPhaseStats() const { return scratch_.broadPhase; }

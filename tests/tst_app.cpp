@@ -7,6 +7,7 @@
 // tst_collision_lessons.cpp, the plots' diagnostics against the rbw CLI.
 #include "app/gui/code_view.h"
 #include "app/gui/derivation/derivation_view.h"
+#include "app/gui/formula_pane.h"
 #include "app/gui/main_window.h"
 #include "app/gui/plots/body_plot_panel.h"
 #include "app/gui/plots/plot_panel.h"
@@ -118,6 +119,7 @@ private slots:
     void lesson1OmegaInPanelAndDerivation();
     void showCodeOfAQuantity();
     void modelIsConsistent();
+    void contactsGroupedByPair();
     void stepBackRestoresExactly();
     void plotsFollowTheCli();
     void dragPullsTheBox();
@@ -192,11 +194,31 @@ void TestApp::lesson1OmegaInPanelAndDerivation()
     const QAbstractItemModel* model = w.findChild<QTreeView*>("traceView")->model();
     const QModelIndex omega = findRow(model, "angular_velocity");
     QVERIFY(omega.isValid());
-    QCOMPARE(valueText(model, omega), QString("(-2.4, 4.918033, -1.764706)"));
+    // A column, as in the derivation: one component per line.
+    QCOMPARE(valueText(model, omega), QString("-2.4\n4.918033\n-1.764706"));
     QCOMPARE(model->index(omega.row(), TraceModel::SymbolColumn, omega.parent()).data().toString(), QString("ω"));
     QCOMPARE(model->index(omega.row(), TraceModel::FrameColumn, omega.parent()).data().toString(), QString("world"));
     QCOMPARE(model->index(omega.row(), TraceModel::UnitColumn, omega.parent()).data().toString(), QString("rad/s"));
     QCOMPARE(omega.parent().data().toString(), QString("box"));
+
+    // Before and after the step (issue 10): Table 2.1 starts at rest, so v_0 = 0 and
+    // v_1 = v_0 + h F/M = 2 (1, 1, 0)/2 = (1, 1, 0); r_0 = [cos 45°, 0, 0, sin 45°].
+    const QModelIndex v = findRow(model, "linear_velocity");
+    QCOMPARE(model->index(v.row(), TraceModel::BeforeColumn, v.parent()).data().toString(), QString("0\n0\n0"));
+    QCOMPARE(valueText(model, v), QString("1\n1\n0"));
+    const QModelIndex r = findRow(model, "orientation");
+    QCOMPARE(model->index(r.row(), TraceModel::BeforeColumn, r.parent()).data().toString(),
+             QString("w 0.7071068\nx 0\ny 0\nz 0.7071068"));
+    QCOMPARE(model->headerData(TraceModel::BeforeColumn, Qt::Horizontal).toString(), QString("Before"));
+    QCOMPARE(model->headerData(TraceModel::ValueColumn, Qt::Horizontal).toString(), QString("After"));
+    // A force has no value before the step: it is computed in it (negative control).
+    const QModelIndex f = findRow(model, "force");
+    QVERIFY(model->index(f.row(), TraceModel::BeforeColumn, f.parent()).data().toString().isEmpty());
+    // The formula pane typesets the selected row's formula and both values.
+    const QString pane = FormulaPane::rowBodyHtml(v);
+    QVERIFY2(pane.contains(QLatin1String("before: ")) && pane.contains(QLatin1String("after: ")), qPrintable(pane));
+    QVERIFY(pane.contains(QLatin1String("physics/integrators/explicit_euler.cpp")));
+    QVERIFY(!FormulaPane::rowBodyHtml(f).contains(QLatin1String("before: ")));
     QCOMPARE(omega.parent().parent().data().toString(), QString("Integration"));
 
     // The typeset page: rendered by KaTeX without errors, and the omega numbers in it.
@@ -287,6 +309,45 @@ void TestApp::modelIsConsistent()
     auto* step = w.findChild<QAction*>("actionStep");
     for (int i = 0; i < 30; ++i) step->trigger();
     w.findChild<QAction*>("actionStepBack")->trigger();
+}
+
+void TestApp::contactsGroupedByPair()
+{
+    // Lesson 6: three cubes land on a vertex (1 contact), an edge (2) and a face (4).
+    // The table groups the face's 4 corners (and the edge's 2) under one node of the
+    // pair, and lists the vertex's single contact on its own.
+    const SceneLoadResult loaded = loadSceneFile(QStringLiteral(RBW_SOURCE_DIR "/lessons/06-box-on-plane/scene.json"));
+    QVERIFY(loaded.ok());
+    World world(*loaded.scene);
+    StepTrace trace;
+    bool fourCorners = false;
+    for (int k = 0; k < 400 && !fourCorners; ++k) {
+        QVERIFY(world.step(&trace).ok);
+        int faceContacts = 0;
+        for (const ContactHeader& c : trace.contacts) faceContacts += c.bodyA == 2 ? 1 : 0;
+        fourCorners = faceContacts == 4;
+    }
+    QVERIFY2(fourCorners, "the face cube never had 4 contacts at once");
+    TraceModel model;
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    model.setTrace(trace, *loaded.scene);
+    QModelIndex collisions;
+    for (int r = 0; r < model.rowCount(); ++r) {
+        if (model.index(r, 0).data().toString() == QLatin1String("Collisions")) collisions = model.index(r, 0);
+    }
+    QVERIFY(collisions.isValid());
+    QModelIndex facePair;
+    for (int r = 0; r < model.rowCount(collisions); ++r) {
+        if (model.index(r, 0, collisions).data().toString() == QStringLiteral("face ↔ ground · 4 contacts")) {
+            facePair = model.index(r, 0, collisions);
+        }
+    }
+    QVERIFY(facePair.isValid());
+    QCOMPARE(model.rowCount(facePair), 4);
+    // Each point node holds that contact's rows, the impulse among them.
+    const QModelIndex point = model.index(0, 0, facePair);
+    QVERIFY(point.data().toString().startsWith(QLatin1String("contact ")));
+    QVERIFY(findRow(&model, QStringLiteral("impulse"), point).isValid());
 }
 
 void TestApp::stepBackRestoresExactly()

@@ -114,6 +114,24 @@ void TestCli::lesson1TraceFields()
     QVERIFY(std::abs(I0[1].toArray()[1].toDouble() - 1.25 / 6) < 1e-15);
     QVERIFY(std::abs(I0[2].toArray()[2].toDouble() - 1.36 / 6) < 1e-15);
     QVERIFY(close(quantity(step, "point_velocity", 0).value("value"), vec(-1.111861, 0.929412, 2.675410), 5e-7));
+
+    // The state the step started from (issue 10): Table 2.1 starts at rest, turned 90°
+    // about z, so v_0 = omega_0 = L_0 = 0, r_0 = [cos 45°, 0, 0, sin 45°], and the probe
+    // probe 1 is the world point (0.3, 0.5, 0.25) of the scene, at rest.
+    const QJsonObject start = step.value("start").toObject();
+    const QJsonObject box0 = start.value("bodies").toArray().at(0).toObject();
+    QCOMPARE(box0.value("name").toString(), QString("box"));
+    QVERIFY(close(box0.value("position"), vec(0, 0, 0), 0.0));
+    QVERIFY(close(box0.value("linear_velocity"), vec(0, 0, 0), 0.0));
+    QVERIFY(close(box0.value("angular_momentum"), vec(0, 0, 0), 0.0));
+    const QJsonArray r0 = box0.value("orientation").toArray();
+    QCOMPARE(r0.size(), 4);
+    QVERIFY(std::abs(r0[0].toDouble() - std::sqrt(0.5)) < 1e-15 && std::abs(r0[3].toDouble() - std::sqrt(0.5)) < 1e-15);
+    QCOMPARE(box0.value("inverse_inertia_world").toArray().size(), 3);
+    const QJsonArray probes0 = start.value("probes").toArray();
+    QCOMPARE(probes0.size(), 2);
+    QVERIFY(close(probes0[1].toObject().value("point"), vec(0.3, 0.5, 0.25), 1e-15));
+    QVERIFY(close(probes0[1].toObject().value("velocity"), vec(0, 0, 0), 0.0));
 }
 
 void TestCli::doublesRoundTrip()

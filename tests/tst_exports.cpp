@@ -15,6 +15,8 @@
 #include "app/gui/derivation/derivation_view.h"
 #include "app/gui/plots/body_plot_panel.h"
 #include "app/gui/plots/plot_panel.h"
+#include "app/gui/worksheet_export.h"
+#include "app/core/exercise.h"
 #include "physics/world.h"
 
 #include <QApplication>
@@ -189,6 +191,8 @@ private slots:
     void bodyPlotPng();
     void accuracyPngAndCsvRefused();
     void rbwStudyOutputRefused();
+    void worksheetPdfAndHtml();
+    void worksheetRefused();
 
 private:
     std::unique_ptr<DerivationView> view_;
@@ -383,6 +387,44 @@ void TestExports::rbwStudyOutputRefused()
         *error = QString::fromUtf8(rbw.readAllStandardError());
         // Exit status 2 (bad input) is the documented answer to an unwritable --output.
         return !(rbw.exitStatus() == QProcess::NormalExit && rbw.exitCode() == 2);
+    });
+}
+
+void TestExports::worksheetPdfAndHtml()
+{
+    // Lesson 1's exercise for seed 7: the worksheet and its key, as PDF and as HTML.
+    const ExerciseLoadResult spec = loadExercise(lessonPath(QStringLiteral("01-one-step")));
+    QVERIFY2(spec.ok(), qPrintable(spec.errors.join('\n')));
+    const GeneratedExercise g = generateExercise(*spec.spec, 7);
+    QVERIFY(g.ok());
+    QTemporaryDir dir;
+    WorksheetFiles written;
+    QString error;
+    QVERIFY2(exportWorksheet(*spec.spec, g, dir.filePath(QStringLiteral("sheet.pdf")), &written, &error), qPrintable(error));
+    QCOMPARE(written.worksheet, dir.filePath(QStringLiteral("sheet.pdf")));
+    QCOMPARE(written.answerKey, dir.filePath(QStringLiteral("sheet-key.pdf")));
+    verifyWholePdf(written.worksheet);
+    verifyWholePdf(written.answerKey);
+    // The key has the answers the sheet leaves empty: a different, longer document.
+    QVERIFY(QFileInfo(written.answerKey).size() > QFileInfo(written.worksheet).size());
+    // HTML: the same pages rbw exercise writes.
+    QVERIFY2(exportWorksheet(*spec.spec, g, dir.filePath(QStringLiteral("sheet.html")), &written, &error), qPrintable(error));
+    QFile key(written.answerKey);
+    QVERIFY(key.open(QIODevice::ReadOnly));
+    QCOMPARE(QString::fromUtf8(key.readAll()), exerciseWorksheetHtml(*spec.spec, g, true));
+    // Nothing else: no temporary files beside them.
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 4);
+}
+
+void TestExports::worksheetRefused()
+{
+    const QString why = whyNoLockedFolder();
+    if (!why.isEmpty()) QSKIP(qPrintable(why));
+    const ExerciseLoadResult spec = loadExercise(lessonPath(QStringLiteral("01-one-step")));
+    QVERIFY(spec.ok());
+    const GeneratedExercise g = generateExercise(*spec.spec, 7);
+    checkRefusedAndNothingLeft(QStringLiteral("pdf"), [&](const QString& path, QString* error) {
+        return exportWorksheet(*spec.spec, g, path, nullptr, error);
     });
 }
 

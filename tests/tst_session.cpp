@@ -43,6 +43,19 @@ bool sameTrace(const StepTrace& a, const StepTrace& b)
         // The statement that computed the value travels with it through the history.
         if (sourceText(x) != sourceText(y)) return false;
     }
+    // and the state the step started from (the table's Before column)
+    if (a.start.bodies.size() != b.start.bodies.size() || a.start.probes.size() != b.start.probes.size()) return false;
+    for (size_t i = 0; i < a.start.bodies.size(); ++i) {
+        const BodyState& x = a.start.bodies[i];
+        const BodyState& y = b.start.bodies[i];
+        if (x.x_W != y.x_W || x.v_W != y.v_W || x.q_WB.coeffs() != y.q_WB.coeffs() || x.L_W != y.L_W ||
+            x.R_WB != y.R_WB || x.Iinv_W != y.Iinv_W || x.omega_W != y.omega_W) {
+            return false;
+        }
+    }
+    for (size_t i = 0; i < a.start.probes.size(); ++i) {
+        if (a.start.probes[i].p_W != b.start.probes[i].p_W || a.start.probes[i].v_W != b.start.probes[i].v_W) return false;
+    }
     return a.diagnostics.total == b.diagnostics.total && a.diagnostics.P_W == b.diagnostics.P_W;
 }
 
@@ -64,6 +77,12 @@ private slots:
     void toggleTorques();
     void blowUpStopsTheRun();
     void advanceIsBounded();
+    void goToStepIsExact_data();
+    void goToStepIsExact();
+    void steppingFromEarlierDiscardsLater();
+    void goToStepLimits();
+    void historyKeepsWithinItsByteBudget_data();
+    void historyKeepsWithinItsByteBudget();
 };
 
 void TestSession::stepBackRestoresExactly_data()
@@ -286,7 +305,13 @@ void TestSession::pushActsForOneStep()
     Session s;
     s.load(scene);
     QVERIFY(s.push(Vec3(0, 0, 2)));   // direction only; the scene sets 5 N
+    // Queued for the next step (the view draws it before that step): 5 N along +z at
+    // the scene's corner (0.5, 0.3, 0.25) in the body frame.
+    QCOMPARE(s.pendingPushes().size(), std::size_t(1));
+    QVERIFY(s.pendingPushes()[0].second == Vec3(0, 0, 5));
+    QVERIFY(s.pendingPushes()[0].first == s.world()->bodyToWorld(0, Vec3(0.5, 0.3, 0.25)));
     QVERIFY(s.step());
+    QVERIFY(s.pendingPushes().empty());
     // v = h f / M = 0.01 * 5 / 2 = 0.025 along +z
     QVERIFY((s.world()->states()[0].v_W - Vec3(0, 0, 0.025)).norm() < 1e-15);
     QVERIFY(s.step());
@@ -352,6 +377,143 @@ void TestSession::advanceIsBounded()
     QCOMPARE(recorded.count(), 7);   // one sample per step, also inside a batch
     // With a zero budget, one step is still taken each call, so play always progresses.
     QCOMPARE(s.advance(1000, 0.0), 1);
+}
+
+// The history scrubber: going to step k, back or forward through the recorded
+// history, gives the state and trace of a run that simply took k steps, bit for bit
+// (a second session that steps straight to k is the reference).
+void TestSession::goToStepIsExact_data()
+{
+    QTest::addColumn<QString>("lesson");
+    QTest::addColumn<long>("steps");   // recorded first
+    QTest::addColumn<long>("target");
+    QTest::newRow("01 back to 0") << "01-one-step/scene.json" << 3L << 0L;
+    QTest::newRow("03 back over the collision") << "03-two-box-collision/scene.json" << 10L << 2L;
+    QTest::newRow("04 back to 400 of 600") << "04-many-boxes/scene.json" << 600L << 400L;
+    QTest::newRow("04 forward to 400 (new steps)") << "04-many-boxes/scene.json" << 0L << 400L;
+    QTest::newRow("07 bounce, back to 123") << "07-bounce/scene.json" << 300L << 123L;
+    QTest::newRow("09 racket, back to 999 of 1000") << "09-tennis-racket/scene.json" << 1000L << 999L;
+}
+
+void TestSession::goToStepIsExact()
+{
+    QFETCH(QString, lesson);
+    QFETCH(long, steps);
+    QFETCH(long, target);
+    const SceneDef scene = lessonScene(lesson);
+
+    Session reference;
+    reference.load(scene);
+    for (long k = 0; k < target; ++k) QVERIFY(reference.step());
+
+    Session s;
+    s.load(scene);
+    for (long k = 0; k < steps; ++k) QVERIFY(s.step());
+    QSignalSpy rewound(&s, &Session::rewound);
+    QVERIFY(s.goToStep(target));
+    QCOMPARE(s.world()->stepIndex(), target);
+    QCOMPARE(rewound.count(), target < steps ? 1 : 0);
+    QVERIFY2(sameStates(s.world()->states(), reference.world()->states()), "state differs from a straight run");
+    QCOMPARE(s.world()->time(), reference.world()->time());
+    QCOMPARE(s.currentTrace() == nullptr, reference.currentTrace() == nullptr);
+    if (target > 0) QVERIFY2(sameTrace(*s.currentTrace(), *reference.currentTrace()), "trace differs");
+
+    // Forward again within the history: the later steps come back exactly as recorded,
+    // one stepRecorded per step passed (the plots' samples).
+    if (steps > target) {
+        for (long k = target; k < steps; ++k) QVERIFY(reference.step());
+        QSignalSpy recorded(&s, &Session::stepRecorded);
+        QVERIFY(s.goToStep(steps));
+        QCOMPARE(recorded.count(), static_cast<qsizetype>(steps - target));
+        QVERIFY(sameStates(s.world()->states(), reference.world()->states()));
+        QVERIFY(sameTrace(*s.currentTrace(), *reference.currentTrace()));
+    }
+}
+
+void TestSession::steppingFromEarlierDiscardsLater()
+{
+    Session s;
+    s.load(lessonScene("05-spinning/scene.json"));
+    for (int k = 0; k < 20; ++k) QVERIFY(s.step());
+    QVERIFY(s.goToStep(5));
+    // The later steps are kept while only the cursor moves (redo) ...
+    QCOMPARE(s.history().stepsForwardAvailable(), std::size_t(15));
+    QCOMPARE(s.history().stepsBackAvailable(), std::size_t(5));
+    QVERIFY(s.stepBack());
+    QCOMPARE(s.history().stepsForwardAvailable(), std::size_t(16));
+    // ... and a step from here discards them, as typing after an undo drops the redo.
+    QVERIFY(s.step());
+    QCOMPARE(s.world()->stepIndex(), 5L);
+    QCOMPARE(s.history().stepsForwardAvailable(), std::size_t(0));
+    QCOMPARE(s.history().lastStep(), 5L);
+    // So does an edit of a parameter (the later steps used the old h).
+    for (int k = 0; k < 5; ++k) QVERIFY(s.step());
+    QVERIFY(s.goToStep(7));
+    QCOMPARE(s.history().lastStep(), 10L);
+    QVERIFY(s.setDt(s.world()->scene().dt / 2));
+    QCOMPARE(s.history().lastStep(), 7L);
+    QCOMPARE(s.world()->stepIndex(), 7L);
+}
+
+void TestSession::goToStepLimits()
+{
+    Session s;
+    s.load(lessonScene("05-spinning/scene.json"));
+    for (int k = 0; k < 1010; ++k) QVERIFY(s.step());
+    // The history keeps 1000 steps back: step 10 is the oldest kept state.
+    QCOMPARE(s.history().firstStep(), 10L);
+    QVERIFY(!s.goToStep(9));   // negative control: no longer recorded
+    QCOMPARE(s.world()->stepIndex(), 1010L);
+    QVERIFY(s.goToStep(10));
+    QCOMPARE(s.world()->stepIndex(), 10L);
+    QVERIFY(!s.goToStep(-1));
+    // Beyond the recording: at most maxNewSteps new steps.
+    QVERIFY(!s.goToStep(2000, 5));
+    QCOMPARE(s.world()->stepIndex(), 1015L);
+}
+
+// The history keeps up to 1000 steps, or as many as fit in its byte budget: a small
+// scene keeps all 1000 (lesson 4's six boxes: the scrubber reaches any of them), the
+// fifty-box variant fewer, and never more bytes than the budget.
+void TestSession::historyKeepsWithinItsByteBudget_data()
+{
+    QTest::addColumn<QString>("lesson");
+    QTest::addColumn<int>("steps");
+    QTest::addColumn<bool>("keepsAll");   // all 1000 steps back
+    QTest::newRow("04 six boxes") << "04-many-boxes/scene.json" << 1100 << true;
+    QTest::newRow("05 two cubes") << "05-spinning/scene.json" << 1100 << true;
+    QTest::newRow("04 fifty boxes") << "04-many-boxes/fifty-boxes.json" << 1000 << false;
+}
+
+void TestSession::historyKeepsWithinItsByteBudget()
+{
+    QFETCH(QString, lesson);
+    QFETCH(int, steps);
+    QFETCH(bool, keepsAll);
+    Session s;
+    s.load(lessonScene(lesson));
+    for (int k = 0; k < steps; ++k) QVERIFY(s.step());
+    const StepHistory& h = s.history();
+    QVERIFY2(h.bytes() <= h.byteBudget(), qPrintable(QString::number(h.bytes())));
+    qInfo("%s: %zu steps back kept, %.1f MB", qPrintable(lesson), h.stepsBackAvailable(), h.bytes() / 1e6);
+    // The running sum is the entries' own sizes.
+    std::size_t sum = 0;
+    for (std::size_t i = 0; i < h.size(); ++i) sum += h.at(i).bytes();
+    QCOMPARE(h.bytes(), sum);
+    if (keepsAll) {
+        QCOMPARE(h.stepsBackAvailable(), std::size_t(1000));
+    } else {
+        QVERIFY(h.stepsBackAvailable() < 1000);
+        QVERIFY2(h.stepsBackAvailable() >= 300, qPrintable(QString::number(h.stepsBackAvailable())));
+    }
+    // Every kept step still comes back exactly: the oldest one too.
+    QVERIFY(s.goToStep(h.firstStep()));
+    QCOMPARE(s.world()->stepIndex(), h.firstStep());
+    // Scrubbing and discarding keep the sum right.
+    QVERIFY(s.step());
+    sum = 0;
+    for (std::size_t i = 0; i < h.size(); ++i) sum += h.at(i).bytes();
+    QCOMPARE(h.bytes(), sum);
 }
 
 QTEST_GUILESS_MAIN(TestSession)

@@ -1,9 +1,9 @@
 #include "app/cli/exercise_command.h"
 
+#include "app/core/atomic_file.h"
 #include "app/core/exercise.h"
 
 #include <QFile>
-#include <QSaveFile>
 #include <QTextStream>
 
 #include <cstdio>
@@ -21,16 +21,6 @@ int fail(const QStringList& messages)
     for (const QString& m : messages) err << "rbw: " << m << '\n';
     err.flush();
     return kExitBadInput;
-}
-
-// The file appears complete or not at all.
-QString writeFile(const QString& path, const QString& option, const QByteArray& bytes)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        return path + ": " + option + ": cannot write: " + file.errorString();
-    }
-    return QString();
 }
 
 } // namespace
@@ -53,8 +43,11 @@ int runExerciseCommand(const QCommandLineParser& parser, const QString& lesson)
     QStringList errors;
     auto write = [&](const char* option, const QByteArray& bytes) {
         if (!parser.isSet(option)) return;
-        const QString e = writeFile(parser.value(option), QStringLiteral("--") + option, bytes);
-        if (!e.isEmpty()) errors << e;
+        // The file appears complete or not at all.
+        QString e;
+        if (!writeFileAtomically(parser.value(option), bytes, &e)) {
+            errors << e.replace(QLatin1String(": cannot write:"), QStringLiteral(": --%1: cannot write:").arg(option));
+        }
     };
     write("output", g.sceneJson);
     write("worksheet", exerciseWorksheetHtml(spec, g, false).toUtf8());

@@ -2,6 +2,7 @@
 // the state, the diagnostics and the step trace as JSON (or CSV), for scripts,
 // graders and the tests. Exit status: 0 success, 2 bad input, 3 blow-up.
 #include "app/cli/check_command.h"
+#include "app/cli/contact_study_command.h"
 #include "app/cli/exercise_command.h"
 #include "app/core/csv_output.h"
 #include "app/core/json_output.h"
@@ -317,6 +318,9 @@ int main(int argc, char* argv[])
         "                    check a student's numbers for one step (--step K, --tolerance REL,\n"
         "                    --format text|json|csv); exit 0 all correct, 1 some not\n"
         "  study SCENE.json  every integrator at every dt against the scene's exact answer (CSV)\n"
+        "  contact-study PROBLEM\n"
+        "                    resting-box, tower or rain in both contact models: overlap, drift,\n"
+        "                    energy gained against ns/step (CSV); --iterations, --dt, --t-end, --boxes\n"
         "  exercise LESSON --seed N\n"
         "                    the lesson's scene with new numbers (docs/exercises.md); --output FILE,\n"
         "                    --worksheet F.html, --answer-key F.html, --answers-key F.json\n\n"
@@ -340,9 +344,11 @@ int main(int argc, char* argv[])
         {"integrators", "For study: comma-separated integrator names (default: all).", "A,B,..."},
         {"step", "For check: the step K whose numbers are checked (default: the answers file's \"step\", else 0).", "K"},
         {"tolerance", "For check: relative tolerance of a correct answer (default 1e-3: 4 significant figures).", "REL"},
-        {"t-end", "For study: end time T in seconds, the same for every run (default: steps x dt of the scene).", "T"},
-        {"output", "For study and exercise: write the CSV or the scene to FILE instead of standard output.", "FILE"},
+        {"t-end", "For study and contact-study: end time T in seconds, the same for every run (default: steps x dt of the scene).", "T"},
+        {"output", "For study, contact-study and exercise: write the CSV or the scene to FILE instead of standard output.", "FILE"},
         {"seed", "For exercise: the seed N of the new numbers (the same seed, the same scene).", "N"},
+        {"iterations", "For contact-study: the manifold model's solver iterations (default: 1,2,4,8,16).", "N1,N2,..."},
+        {"boxes", "For contact-study rain: the number of boxes (default 100).", "N"},
         {"worksheet", "For exercise: write the HTML worksheet (setup and an empty answer table) to FILE.", "FILE"},
         {"answer-key", "For exercise: write the worksheet filled with the workbook's numbers to FILE.", "FILE"},
         {"answers-key", "For exercise: write the key as an answers file (rbw check accepts it) to FILE.", "FILE"},
@@ -375,6 +381,10 @@ int main(int argc, char* argv[])
     if (command == "check") {
         if (args.size() < 3) return badInput("check takes a scene file and at least one answers file (see rbw --help)");
         return rbw::runCheckCommand(parser, args[1], args.mid(2));
+    }
+    if (command == "contact-study") {
+        if (args.size() != 2) return badInput("contact-study takes exactly one problem: resting-box, tower or rain");
+        return rbw::runContactStudyCommand(parser, args[1]);
     }
     if (command == "exercise") {
         if (args.size() != 2) return badInput("exercise takes exactly one lesson, an id or a folder (see rbw --help)");

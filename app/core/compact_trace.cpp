@@ -3,7 +3,7 @@
 namespace rbw {
 
 CompactTrace::CompactTrace(const StepTrace& trace)
-    : step_(trace.step), time_(trace.time), contacts_(trace.contacts), diagnostics_(trace.diagnostics)
+    : step_(trace.step), time_(trace.time), contacts_(trace.contacts), diagnostics_(trace.diagnostics), start_(trace.start)
 {
     static_assert(sizeof(Header) == 24, "the packed header: two pointers and two ints");
     headers_.reserve(trace.entries.size());
@@ -43,6 +43,7 @@ StepTrace CompactTrace::unpack() const
     t.time = time_;
     t.contacts = contacts_;
     t.diagnostics = diagnostics_;
+    t.start = start_;
     t.entries.reserve(headers_.size());
     const double* v = values_.data();
     for (std::size_t i = 0; i < headers_.size(); ++i) {
@@ -77,7 +78,8 @@ StepTrace CompactTrace::unpack() const
 std::size_t CompactTrace::bytes() const
 {
     return headers_.capacity() * sizeof(Header) + kinds_.capacity() + values_.capacity() * sizeof(double) +
-           contacts_.capacity() * sizeof(ContactHeader);
+           contacts_.capacity() * sizeof(ContactHeader) +
+           start_.bodies.capacity() * sizeof(BodyState) + start_.probes.capacity() * sizeof(ProbeSample);
 }
 
 } // namespace rbw

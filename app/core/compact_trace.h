@@ -38,6 +38,7 @@ private:
     std::vector<double> values_;
     std::vector<ContactHeader> contacts_;
     Diagnostics diagnostics_;
+    StartOfStep start_;   // the state the step started from, as it was
 };
 
 } // namespace rbw

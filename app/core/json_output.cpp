@@ -102,9 +102,33 @@ QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene)
         contact.insert("sources", sources);
         contacts.append(contact);
     }
+    // start: the state the step started from (StepTrace::start), per body and probe.
+    QJsonArray startBodies;
+    for (int b = 0; b < static_cast<int>(trace.start.bodies.size()); ++b) {
+        const BodyState& s = trace.start.bodies[static_cast<size_t>(b)];
+        startBodies.append(QJsonObject{
+            {"name", bodyName(scene, b)},
+            {"position", jsonVec3(s.x_W)},
+            {"linear_velocity", jsonVec3(s.v_W)},
+            {"orientation", jsonQuat(s.q_WB)},
+            {"angular_momentum", jsonVec3(s.L_W)},
+            {"rotation_matrix", jsonMat3(s.R_WB)},
+            {"inverse_inertia_world", jsonMat3(s.Iinv_W)},
+            {"angular_velocity", jsonVec3(s.omega_W)},
+        });
+    }
+    QJsonArray startProbes;
+    for (const ProbeSample& p : trace.start.probes) {
+        startProbes.append(QJsonObject{
+            {"body", bodyName(scene, p.body)},
+            {"point", jsonVec3(p.p_W)},
+            {"velocity", jsonVec3(p.v_W)},
+        });
+    }
     return QJsonObject{
         {"step", static_cast<qint64>(trace.step)},
         {"time", trace.time},
+        {"start", QJsonObject{{"bodies", startBodies}, {"probes", startProbes}}},
         {"quantities", quantities},
         {"contacts", contacts},
         {"diagnostics", diagnosticsToJson(trace.diagnostics, &scene)},

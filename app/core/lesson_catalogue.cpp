@@ -60,11 +60,49 @@ QList<Lesson> lessonCatalogue(const QString& directory)
             }
             const QString variantId = id + '/' + QFileInfo(variant).completeBaseName();
             const QJsonObject vo = QJsonDocument::fromJson(v.readAll()).object();
+            // Its own text NAME.md beside NAME.json, else the lesson's.
+            const QString ownText = folder.filePath(QFileInfo(variant).completeBaseName() + QStringLiteral(".md"));
             lessons.append(Lesson{variantId, vo.value("name").toString(variantId), vo.value("description").toString(),
-                                  folder.filePath(variant), textPath, true});
+                                  folder.filePath(variant), QFile::exists(ownText) ? ownText : textPath, true});
         }
     }
     return lessons;
+}
+
+LessonArgument resolveLessonArgument(const QString& argument, const QList<Lesson>& lessons)
+{
+    LessonArgument result;
+    for (const Lesson& l : lessons) {
+        if (l.id == argument) {
+            result.lessonId = l.id;
+            return result;
+        }
+    }
+    const QFileInfo info(argument);
+    const bool looksLikePath = argument.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive) ||
+                               argument.contains('/') || argument.contains('\\') || info.exists();
+    if (!looksLikePath) {
+        QStringList ids;
+        for (const Lesson& l : lessons) {
+            if (!l.variant) ids << l.id;
+        }
+        result.error = QStringLiteral("unknown lesson \"%1\"; give a lesson id (%2) or the path of a scene file")
+                           .arg(argument, ids.join(QStringLiteral(", ")));
+        return result;
+    }
+    if (!info.isFile()) {
+        result.error = QStringLiteral("%1: cannot open: %2").arg(argument, info.exists() ? QStringLiteral("not a file")
+                                                                                         : QStringLiteral("no such file"));
+        return result;
+    }
+    for (const Lesson& l : lessons) {
+        if (QFileInfo(l.scenePath).canonicalFilePath() == info.canonicalFilePath()) {
+            result.lessonId = l.id;
+            return result;
+        }
+    }
+    result.file = info.absoluteFilePath();
+    return result;
 }
 
 } // namespace rbw

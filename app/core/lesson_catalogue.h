@@ -16,7 +16,7 @@ struct Lesson {
     QString title;         // scene "name"
     QString description;   // scene "description"
     QString scenePath;
-    QString textPath;      // lesson.md, may not exist
+    QString textPath;      // lesson.md (a variant: NAME.md beside NAME.json if there is one), may not exist
     bool variant = false;  // another scene file of the lesson's folder; id "folder/file"
 };
 
@@ -27,5 +27,18 @@ struct Lesson {
 QString lessonsDirectory();
 
 QList<Lesson> lessonCatalogue(const QString& directory = lessonsDirectory());
+
+// What `rigid-workbook --lesson ARG` or `rigid-workbook FILE` names: a lesson by its id
+// ("01-one-step", "07-bounce/impulses"), or a scene file by its path (a lesson's own
+// file counts as that lesson). `error` says why it names neither: an unknown id (with
+// the ids there are), or a path that is not a file.
+struct LessonArgument {
+    QString lessonId;   // a lesson of the catalogue
+    QString file;       // else a scene file (absolute path), not yet loaded
+    QString error;      // else why not
+
+    bool ok() const { return error.isEmpty(); }
+};
+LessonArgument resolveLessonArgument(const QString& argument, const QList<Lesson>& lessons);
 
 } // namespace rbw

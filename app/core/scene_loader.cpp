@@ -209,6 +209,14 @@ void requireNormalisable(double squaredNorm, const QString& path)
     }
 }
 
+// A length that is 1 to rounding (|x.x - 1| <= 16 eps): normalising it again would only
+// move the last bits, so it is kept as written and a scene the app saved (scene_writer.h)
+// reads back bit for bit.
+bool isUnitToRounding(double squaredNorm)
+{
+    return std::abs(squaredNorm - 1.0) <= 16 * std::numeric_limits<double>::epsilon();
+}
+
 // { "axis": [x,y,z], "degrees": d } | { "axis": [...], "radians": a } | { "quaternion": [w,x,y,z] }
 Quat toOrientation(const QJsonValue& v, const QString& path)
 {
@@ -230,7 +238,7 @@ Quat toOrientation(const QJsonValue& v, const QString& path)
             throw FieldError{qp, QStringLiteral("must not be the zero quaternion")};
         }
         requireNormalisable(q.coeffs().squaredNorm(), qp);
-        return q.normalized();
+        return isUnitToRounding(q.coeffs().squaredNorm()) ? q : q.normalized();
     }
     const QString ap = join(path, "axis");
     const Vec3 axis = toVec3(require(o, path, "axis"), ap);
@@ -379,7 +387,7 @@ PlaneDef toPlane(const QJsonValue& v, const QString& path)
     if (n != Vec3::Zero()) {
         requireNormalisable(n.squaredNorm(), join(path, "normal"));
     }
-    p.n_W = n == Vec3::Zero() ? n : n.normalized();
+    p.n_W = n == Vec3::Zero() || isUnitToRounding(n.squaredNorm()) ? n : n.normalized();
     return p;
 }
 
@@ -416,7 +424,8 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
     checkKeys(o, QString(), {"name", "description", "dt", "steps", "integrator", "inertia_convention",
                              "gravity", "bodies", "forces", "torques", "push", "probes", "planes", "box_collisions",
                              "restitution", "restitution_threshold", "friction", "pairs", "position_correction",
-                             "plane_contacts", "energy_jump"});
+                             "plane_contacts", "energy_jump", "contact_model", "solver_iterations", "sleep",
+                             "position_fix"});
     SceneDef s;
     s.name = o.contains("name") ? toString(o.value("name"), "name").toStdString()
                                 : QFileInfo(fileLabel).completeBaseName().toStdString();
@@ -498,6 +507,36 @@ SceneDef toScene(const QJsonObject& o, const QString& fileLabel)
         } else {
             throw FieldError{"plane_contacts",
                              QStringLiteral("must be \"per-point\" or \"average\", got \"%1\"").arg(shown(mode))};
+        }
+    }
+    // The contact model and its keys (issue 11); the rules (which keys belong to which
+    // model, the iteration range) are validate()'s.
+    if (o.contains("contact_model")) {
+        const QString model = toString(o.value("contact_model"), "contact_model");
+        if (model == "course") {
+            s.contactModel = ContactModel::Course;
+        } else if (model == "manifold") {
+            s.contactModel = ContactModel::Manifold;
+        } else {
+            throw FieldError{"contact_model",
+                             QStringLiteral("must be \"course\" or \"manifold\", got \"%1\"").arg(shown(model))};
+        }
+    }
+    if (o.contains("solver_iterations")) {
+        s.solverIterations = toInteger(o.value("solver_iterations"), "solver_iterations");
+    }
+    if (o.contains("sleep")) s.sleep = toBool(o.value("sleep"), "sleep");
+    if (o.contains("position_fix")) {
+        const QString fix = toString(o.value("position_fix"), "position_fix");
+        if (fix == "ngs") {
+            s.positionFix = PositionFix::Ngs;
+        } else if (fix == "baumgarte") {
+            s.positionFix = PositionFix::Baumgarte;
+        } else if (fix == "none") {
+            s.positionFix = PositionFix::None;
+        } else {
+            throw FieldError{"position_fix", QStringLiteral("must be \"ngs\", \"baumgarte\" or \"none\", got \"%1\"")
+                                                 .arg(shown(fix))};
         }
     }
     return s;

@@ -4,6 +4,7 @@
 
 #include <QElapsedTimer>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rbw {
@@ -40,11 +41,11 @@ const StepTrace* Session::currentTrace() const
 
 std::unique_ptr<World> Session::worldBeforeCurrentStep() const
 {
-    if (!world_ || !hasCurrent_ || history_.size() < 2) {
+    if (!world_ || !hasCurrent_ || history_.cursor() < 1) {
         return nullptr;
     }
     auto before = std::make_unique<World>(edited_);
-    before->restore(history_.at(history_.size() - 2).state);
+    before->restore(history_.at(history_.cursor() - 1).state);
     return before;
 }
 
@@ -64,6 +65,9 @@ bool Session::rebuild(SceneDef edited, QString* error)
         return false;
     }
     edited_ = std::move(edited);
+    // An edit is a new branch: the recorded steps after this one were computed with
+    // the old parameters, so they go (as stepping on from here would drop them).
+    history_.discardAfterCursor();
     if (world_) {
         // Carry the current state over into a world built from the edited scene.
         const WorldSnapshot now = world_->snapshot();
@@ -182,20 +186,71 @@ int Session::advance(int maxSteps, double budgetMs)
     return taken;
 }
 
+void Session::restoreCurrentEntry()
+{
+    // The world at the recorded state, exactly: its snapshot holds every body's state,
+    // the step counter, the time, the switches and the status.
+    const HistoryEntry& entry = history_.current();
+    world_->restore(entry.state);
+    hasCurrent_ = entry.hasTrace;
+    current_ = hasCurrent_ ? entry.trace.unpack() : StepTrace{};
+    pendingPushes_.clear();
+}
+
 bool Session::stepBack()
 {
     if (!world_ || !history_.pop()) {
         return false;
     }
-    // The world at the earlier state, exactly: its snapshot holds every body's state,
-    // the step counter, the time and the switches.
-    world_->restore(history_.back().state);
-    hasCurrent_ = history_.back().hasTrace;
-    current_ = hasCurrent_ ? history_.back().trace.unpack() : StepTrace{};
-    pendingPushes_.clear();
+    restoreCurrentEntry();
     emit rewound(world_->stepIndex());
     emit stateChanged();
     return true;
+}
+
+bool Session::goToStep(long k, long maxNewSteps)
+{
+    if (!world_ || history_.empty() || k < history_.firstStep()) {
+        return false;
+    }
+    const long now = world_->stepIndex();
+    if (k == now) {
+        return true;
+    }
+    if (k < now) {
+        history_.seek(static_cast<std::size_t>(history_.indexOfStep(k)));
+        restoreCurrentEntry();
+        emit rewound(k);
+        emit stateChanged();
+        return true;
+    }
+    // Forward through the recorded steps: each becomes current again, as when it was
+    // first taken, so every view that follows stepRecorded gets its sample back.
+    const long recordedTarget = std::min(k, history_.lastStep());
+    bool moved = false;
+    while (world_->stepIndex() < recordedTarget) {
+        history_.seek(history_.cursor() + 1);
+        restoreCurrentEntry();
+        moved = true;
+        if (hasCurrent_) {
+            emit stepRecorded(current_);
+        }
+    }
+    // Beyond the recorded history: new steps.
+    long taken = 0;
+    bool ok = true;
+    while (world_->stepIndex() < k) {
+        if (taken >= maxNewSteps || !stepQuiet()) {
+            ok = false;
+            break;
+        }
+        ++taken;
+        moved = true;
+    }
+    if (moved) {
+        emit stateChanged();
+    }
+    return ok && world_->stepIndex() == k;
 }
 
 void Session::beginGrab(int body, const Vec3& p_W)
@@ -242,6 +297,7 @@ bool Session::push(const Vec3& direction_W)
     }
     const Vec3 p_W = world_->bodyToWorld(edited_.push.body, edited_.push.p_B);
     pendingPushes_.emplace_back(p_W, edited_.push.magnitude * direction_W.normalized());
+    emit stateChanged();   // the view draws the push before the step that applies it
     return true;
 }
 

@@ -62,8 +62,18 @@ public:
     // Playing: up to maxSteps steps, but stops after budgetMs of wall time so the GUI
     // stays responsive; returns the number of steps taken.
     int advance(int maxSteps, double budgetMs);
-    // Restores the previous state and its trace exactly. False if there is none.
+    // Restores the previous state and its trace exactly. False if there is none. The
+    // later states stay in the history (the scrubber can go to them again) until a
+    // step is taken from here, which discards them (editor-undo semantics).
     bool stepBack();
+    // The history scrubber: makes the state after step k current (its state and trace
+    // exactly as recorded, restored, never recomputed). Within the recorded history
+    // this only moves the history's cursor: going back emits rewound(k), going
+    // forward emits stepRecorded for each recorded step passed (so plots get their
+    // samples back). Beyond the newest recorded step it steps on, at most maxNewSteps
+    // new steps, until k or a blow-up. False if k is before the oldest kept state, or
+    // the target was not reached (blow-up, limit).
+    bool goToStep(long k, long maxNewSteps = 100000);
     const StepStatus& status() const;
 
     // --- interaction ---
@@ -81,6 +91,9 @@ public:
     // the scene has none.
     bool toggleTorques();
     bool torquesOn() const;
+    // The pushes queued for the next step (p_W, f_W), so the view can draw them
+    // before the step that applies them.
+    const std::vector<std::pair<Vec3, Vec3>>& pendingPushes() const { return pendingPushes_; }
 
 signals:
     // A new lesson, or reset: views drop what they hold.
@@ -104,6 +117,8 @@ private:
     bool rebuild(SceneDef edited, QString* error);
     // One step without stateChanged (advance() emits it once per batch).
     bool stepQuiet();
+    // Puts the world and current_ at the history's current entry.
+    void restoreCurrentEntry();
     void applyInteraction();
 
     SceneDef base_;     // as loaded from the lesson

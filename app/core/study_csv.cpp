@@ -53,4 +53,37 @@ QString studyToCsv(const lab::StudyResult& result)
     return text;
 }
 
+QStringList contactStudyCsvHeader()
+{
+    return {"problem", "model", "iterations", "dt", "steps", "t_end", "deepest_overlap", "deepest_below", "drift",
+            "energy_gained", "kinetic_energy_end", "moving_end", "ns_per_step", "status"};
+}
+
+QString contactStudyToCsv(const lab::ContactStudyResult& result)
+{
+    QString text = contactStudyCsvHeader().join(',') + '\n';
+    for (const lab::ContactStudyRow& row : result.rows) {
+        const bool ok = row.status == lab::RunStatus::Ok;
+        auto measured = [ok](double x) { return ok ? number(x) : QString(); };
+        const QStringList fields{
+            quoted(QString::fromStdString(result.problem)),
+            QString::fromStdString(row.model),
+            row.iterations > 0 ? QString::number(row.iterations) : QString(),
+            number(row.dt),
+            QString::number(row.steps),
+            number(row.tEnd),
+            measured(row.deepestOverlap),
+            measured(row.deepestBelow),
+            ok ? field(row.drift) : QString(),
+            measured(row.energyGained),
+            measured(row.kineticEnergyEnd),
+            ok ? QString::number(row.movingEnd) : QString(),
+            measured(row.nsPerStep),
+            quoted(QString::fromStdString(row.statusText())),
+        };
+        text += fields.join(',') + '\n';
+    }
+    return text;
+}
+
 } // namespace rbw

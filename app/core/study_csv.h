@@ -8,6 +8,7 @@
 // come from the study.
 #pragma once
 
+#include "physics/lab/contact_study.h"
 #include "physics/lab/study.h"
 
 #include <QString>
@@ -18,5 +19,13 @@ namespace rbw {
 QStringList studyCsvHeader();
 QString studyCsvRow(const lab::StudyRow& row);
 QString studyToCsv(const lab::StudyResult& result);   // header + rows, '\n' line ends
+
+// CSV of a contact study (physics/lab/contact_study.h), one row per model x iterations x dt:
+//   problem,model,iterations,dt,steps,t_end,deepest_overlap,deepest_below,drift,
+//   energy_gained,kinetic_energy_end,moving_end,ns_per_step,status
+// iterations is empty for the course model, drift for the rain; a blown-up run has only
+// its model, h, steps and status.
+QStringList contactStudyCsvHeader();
+QString contactStudyToCsv(const lab::ContactStudyResult& result);
 
 } // namespace rbw

@@ -42,6 +42,18 @@ QString joinNumbers(const double* values, int n, int digits, double scale)
     return parts.join(QStringLiteral(", "));
 }
 
+// "[a, b, c]" per row, round-off chopped against the matrix's largest entry.
+QStringList matrixRows(const Mat3& m, int digits)
+{
+    const double scale = m.cwiseAbs().maxCoeff();
+    QStringList rows;
+    for (int r = 0; r < 3; ++r) {
+        const double row[3] = {m(r, 0), m(r, 1), m(r, 2)};
+        rows << '[' + joinNumbers(row, 3, digits, scale) + ']';
+    }
+    return rows;
+}
+
 template <class... Ts>
 struct Overloaded : Ts... {
     using Ts::operator()...;
@@ -61,15 +73,33 @@ QString formatValue(const TraceValue& value, int digits)
                 const std::array<double, 4> c = toWxyz(q);
                 return QStringLiteral("[w x y z] = [") + joinNumbers(c.data(), 4, digits, largest(c.data(), 4)) + ']';
             },
-            [&](const Mat3& m) {
-                const double scale = m.cwiseAbs().maxCoeff();
-                QStringList rows;
-                for (int r = 0; r < 3; ++r) {
-                    const double row[3] = {m(r, 0), m(r, 1), m(r, 2)};
-                    rows << '[' + joinNumbers(row, 3, digits, scale) + ']';
-                }
-                return '[' + rows.join(QStringLiteral(", ")) + ']';
+            [&](const Mat3& m) { return '[' + matrixRows(m, digits).join(QStringLiteral(", ")) + ']'; },
+        },
+        value);
+}
+
+QString formatValueLines(const TraceValue& value, int digits)
+{
+    // One number per line, as the derivation's column vectors; a matrix one row per line.
+    auto lines = [&](const double* values, int n, const char* const* labels) {
+        const double scale = largest(values, n);
+        QStringList out;
+        for (int i = 0; i < n; ++i) {
+            out << (labels != nullptr ? QString::fromLatin1(labels[i]) + ' ' : QString()) +
+                       formatNumber(chop(values[i], scale), digits);
+        }
+        return out.join('\n');
+    };
+    return std::visit(
+        Overloaded{
+            [&](double x) { return formatNumber(x, digits); },
+            [&](const Vec3& v) { return lines(v.data(), 3, nullptr); },
+            [&](const Quat& q) {
+                static const char* const wxyz[4] = {"w", "x", "y", "z"};
+                const std::array<double, 4> c = toWxyz(q);
+                return lines(c.data(), 4, wxyz);
             },
+            [&](const Mat3& m) { return matrixRows(m, digits).join('\n'); },
         },
         value);
 }

@@ -16,6 +16,11 @@ namespace rbw {
 // "[w x y z] = [1, 0, 0, 0]", "[[a, b, c], [d, e, f], [g, h, i]]".
 QString formatValue(const TraceValue& value, int digits = 7);
 
+// The same for a table cell, as the derivation writes values: a vector as a column,
+// one component per line; a quaternion on four lines, "w ...", "x ...", "y ...", "z ...";
+// a matrix one row per line ("[a, b, c]\n[d, e, f]\n[g, h, i]"); a number as formatValue.
+QString formatValueLines(const TraceValue& value, int digits = 7);
+
 // LaTeX: a number, a column vector as pmatrix, a quaternion as (w, x, y, z), a 3x3 pmatrix.
 QString latexValue(const TraceValue& value, int digits = 7);
 

@@ -1,6 +1,12 @@
-// rigid-workbook: the desktop app. Opens on the lesson named with --lesson ID, else on
-// the lesson open when it was last closed, else (the first time) on lesson 1.
+// rigid-workbook: the desktop app. Opens the scene file given as FILE.json, or the
+// lesson (or scene file) named with --lesson ID|PATH; else the lesson open when it was
+// last closed, else (the first time) lesson 1. A lesson or file that was asked for and
+// cannot be opened is an error: its messages (file, JSON path, reason) go to standard
+// error and the exit status is 2, before any window opens; only the remembered lesson
+// falls back to lesson 1.
 // --version and --help print and exit before any window exists, so they need no display.
+#include "app/core/lesson_catalogue.h"
+#include "app/core/scene_loader.h"
 #include "app/gui/main_window.h"
 #include "app/gui/performance_probe.h"
 #include "app/gui/view/scene_view.h"
@@ -19,7 +25,10 @@ void addOptions(QCommandLineParser& parser)
     parser.setApplicationDescription("Rigid Body Workbook: 3D rigid-body dynamics, step by step.");
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addOption({"lesson", "Open this lesson (folder name, e.g. 01-one-step).", "ID"});
+    parser.addOption({"lesson",
+                      "Open this lesson (its id, e.g. 01-one-step or 07-bounce/impulses) or this scene file (a path).",
+                      "ID|PATH"});
+    parser.addPositionalArgument("file", "A scene file to open (docs/scene-format.md).", "[FILE.json]");
     parser.addOption({"measure",
                       "Measure start-up, frame rate (playing for SECONDS) and memory; print JSON and quit.",
                       "SECONDS"});
@@ -51,6 +60,13 @@ bool answeredWithoutWindow(int argc, char* argv[], int* exitCode)
     return false;
 }
 
+// Each line to standard error as "rigid-workbook: LINE"; the exit status for bad input.
+int refuse(const QStringList& lines)
+{
+    for (const QString& line : lines) std::fprintf(stderr, "rigid-workbook: %s\n", line.toLocal8Bit().constData());
+    return 2;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -76,11 +92,35 @@ int main(int argc, char* argv[])
     addOptions(parser);
     parser.process(app);
 
+    // What was asked for is checked before a window exists: a wrong id or a broken file
+    // is reported and the app does not start on something else.
+    const QStringList files = parser.positionalArguments();
+    if (files.size() > 1) return refuse({QStringLiteral("give at most one scene file, got %1").arg(files.size())});
+    if (files.size() == 1 && parser.isSet("lesson")) {
+        return refuse({QStringLiteral("give either --lesson or a scene file, not both")});
+    }
+    rbw::LessonArgument asked;
+    if (parser.isSet("lesson") || !files.isEmpty()) {
+        const QList<rbw::Lesson> lessons = rbw::lessonCatalogue();
+        asked = rbw::resolveLessonArgument(files.isEmpty() ? parser.value("lesson") : files.first(), lessons);
+        if (!asked.ok()) return refuse({asked.error});
+        QString scenePath = asked.file;
+        for (const rbw::Lesson& l : lessons) {
+            if (l.id == asked.lessonId) scenePath = l.scenePath;
+        }
+        const rbw::SceneLoadResult loaded = rbw::loadSceneFile(scenePath);
+        if (!loaded.ok()) return refuse(loaded.errors);
+    }
+
     rbw::MainWindow window;
     window.show();
-    const QString wanted = parser.isSet("lesson") ? parser.value("lesson")
-                                                  : QSettings().value("lesson/last", "01-one-step").toString();
-    if (!window.openLesson(wanted)) {
+    QString error;
+    if (!asked.lessonId.isEmpty() && !window.openLesson(asked.lessonId)) {
+        return refuse({QStringLiteral("lesson %1 cannot be loaded").arg(asked.lessonId)});   // its scene is broken
+    }
+    if (!asked.file.isEmpty() && !window.openSceneFile(asked.file, &error)) return refuse(error.split('\n'));
+    if (asked.lessonId.isEmpty() && asked.file.isEmpty() &&
+        !window.openLesson(QSettings().value("lesson/last", "01-one-step").toString())) {
         window.openLesson("01-one-step");
     }
     if (parser.isSet("measure")) {

@@ -4,24 +4,33 @@
 #include "app/core/focus_filter.h"
 #include "app/core/scene_loader.h"
 #include "app/gui/accuracy/accuracy_panel.h"
+#include "app/gui/accuracy/contact_study_panel.h"
+#include "app/gui/body_colour_delegate.h"
 #include "app/gui/check/check_panel.h"
 #include "app/gui/code_view.h"
+#include "app/gui/formula_pane.h"
+#include "app/gui/worksheet_export.h"
 #include "app/gui/derivation/derivation_builder.h"
 #include "app/gui/derivation/derivation_view.h"
+#include "app/gui/history_scrubber.h"
 #include "app/gui/parameter_bar.h"
 #include "app/gui/plots/body_plot_panel.h"
+#include "app/gui/plots/quantity_plot_panel.h"
 #include "app/gui/plots/plot_panel.h"
 #include "app/gui/trace_model.h"
 #include "app/gui/view/scene_view.h"
 #include "app/gui/view/view_snapshot.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QClipboard>
 #include <QCloseEvent>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDockWidget>
+#include <QSplitter>
+#include <QTabWidget>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -35,6 +44,7 @@
 #include <QRandomGenerator>
 #include <QScrollArea>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QStatusBar>
 #include <QTableWidget>
 #include <QTextBrowser>
@@ -44,6 +54,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cstring>
 
 namespace rbw {
 
@@ -92,13 +103,20 @@ MainWindow::MainWindow(QWidget* parent)
     centreLayout->setSpacing(0);
     centreLayout->addWidget(alertLabel_);
     centreLayout->addWidget(sceneView_, 1);
+    scrubber_ = new HistoryScrubber(&session_);
+    centreLayout->addWidget(scrubber_);
+    connect(scrubber_, &HistoryScrubber::stepRequested, this, &MainWindow::goToStep);
+    connect(scrubber_, &HistoryScrubber::focusReturnRequested, this,
+            [this] { sceneView_->setFocus(Qt::OtherFocusReason); });
     setCentralWidget(centre);
 
     parameterBar_ = new ParameterBar(&session_, this);
+    parameterBar_->setFocusReturnTarget(sceneView_);   // Enter/Escape in a box: S, Space, arrows work again
     connect(parameterBar_, &ParameterBar::speedChanged, this, [this](double speed) { clock_.setSpeed(speed); });
     connect(parameterBar_, &ParameterBar::messageRequested, statusBar(), &QStatusBar::showMessage);
     clock_.setSpeed(parameterBar_->speed());
     createDocks();
+    createEditorDock();   // before the menus: the View menu lists every dock
     createActions();
     addToolBar(parameterBar_);   // after the simulation bar
 
@@ -114,6 +132,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(&session_, &Session::rewound, this, [this](long stepIndex) {
         plotPanel_->truncate(static_cast<int>(stepIndex) + 1);   // sample 0 is t = 0
         bodyPlotPanel_->truncate(static_cast<int>(stepIndex) + 1);
+        quantityPlots_->truncateAfter(stepIndex - 1);   // the trace of step k leads to state k + 1
         derivationDirty_ = true;
         traceDirty_ = true;
         checkDirty_ = true;
@@ -235,6 +254,14 @@ void MainWindow::createActions()
     // The quantities table's context menu: the row's code and copies.
     traceView_->setContextMenuPolicy(Qt::ActionsContextMenu);
     traceView_->addActions({showCodeAction, copyAction, copyLatexAction});
+    // Plot over time: any row of the table (a contact's too), from the recorded history.
+    auto* plotRow = new QAction(tr("Plot over time"), this);
+    plotRow->setObjectName("actionPlotOverTime");
+    connect(plotRow, &QAction::triggered, this, [this] { plotRowOverTime(traceView_->currentIndex(), false); });
+    auto* plotRowNorm = new QAction(tr("Plot length over time"), this);
+    plotRowNorm->setObjectName("actionPlotNormOverTime");
+    connect(plotRowNorm, &QAction::triggered, this, [this] { plotRowOverTime(traceView_->currentIndex(), true); });
+    traceView_->addActions({plotRow, plotRowNorm});
 
     auto* exportHtml = addShortcutAction(tr("Export derivation as &HTML…"), "actionExportHtml",
                                          {QKeySequence(Qt::CTRL | Qt::Key_E)});
@@ -260,6 +287,7 @@ void MainWindow::createActions()
     connect(keysAction, &QAction::triggered, this, &MainWindow::showKeys);
 
     QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
+    createFileActions(fileMenu);   // open, recent, save (main_window_files.cpp)
     fileMenu->addActions({exportHtml, exportPdf, exportPng, exportCsv});
     fileMenu->addSeparator();
     fileMenu->addAction(quitAction);
@@ -293,8 +321,65 @@ void MainWindow::createActions()
         if (!error.isEmpty()) QMessageBox::warning(this, tr("New numbers"), error);
     });
     simMenu->addAction(newNumbers);
+    // The worksheet and answer key for a seed, as PDF or HTML (docs/exercises.md).
+    auto* exportWorksheetAction = new QAction(tr("Export &worksheet and answer key…"), this);
+    exportWorksheetAction->setObjectName("actionExportWorksheet");
+    connect(exportWorksheetAction, &QAction::triggered, this, [this] {
+        const ExerciseLoadResult spec = loadExercise(QFileInfo(currentLesson_.scenePath).absolutePath());
+        if (!spec.ok()) {
+            QMessageBox::information(this, tr("Worksheet"), tr("This lesson has no exercise.\n\n%1").arg(spec.errors.join('\n')));
+            return;
+        }
+        bool ok = false;
+        const QString text = QInputDialog::getText(this, tr("Worksheet"), tr("Seed (the same seed gives the same numbers):"),
+                                                   QLineEdit::Normal,
+                                                   QString::number(QRandomGenerator::global()->bounded(1000000)), &ok);
+        if (!ok) return;
+        const quint64 seed = text.trimmed().toULongLong(&ok);
+        if (!ok) {
+            QMessageBox::warning(this, tr("Worksheet"), tr("The seed must be a whole number, got \"%1\".").arg(text));
+            return;
+        }
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export worksheet"),
+                                                          QStringLiteral("worksheet-%1.pdf").arg(seed),
+                                                          tr("PDF (*.pdf);;HTML (*.html)"));
+        if (path.isEmpty()) return;
+        const GeneratedExercise generated = generateExercise(*spec.spec, seed);
+        WorksheetFiles written;
+        QString error;
+        if (!generated.ok()) error = generated.errors.join('\n');
+        if (error.isEmpty() && !exportWorksheet(*spec.spec, generated, path, &written, &error)) {
+            QMessageBox::warning(this, tr("Worksheet"), error);
+            return;
+        }
+        if (!error.isEmpty()) {
+            QMessageBox::warning(this, tr("Worksheet"), error);
+            return;
+        }
+        statusBar()->showMessage(tr("Wrote %1 and %2").arg(written.worksheet, written.answerKey), 6000);
+    });
+    simMenu->addAction(exportWorksheetAction);
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     viewMenu->addActions({trailsAction_, fit, resetView});
+    // The state at each body's centre: v, ω and L arrows.
+    const struct {
+        QString text;
+        const char* name;
+        Qt::Key key;
+        void (SceneView::*set)(bool);
+    } stateArrows[] = {{tr("Show &velocity v"), "actionShowVelocity", Qt::Key_V, &SceneView::setShowVelocity},
+                       {tr("Show angular velocity &ω"), "actionShowOmega", Qt::Key_W, &SceneView::setShowAngularVelocity},
+                       {tr("Show angular &momentum L"), "actionShowL", Qt::Key_L, &SceneView::setShowAngularMomentum}};
+    viewMenu->addSeparator();
+    for (const auto& a : stateArrows) {
+        QAction* action = addShortcutAction(a.text, QString::fromLatin1(a.name), {QKeySequence(a.key)});
+        action->setCheckable(true);
+        connect(action, &QAction::toggled, sceneView_, a.set);
+        stateArrowActions_ << action;
+        viewMenu->addAction(action);
+    }
+    followMenu_ = viewMenu->addMenu(tr("Camera &follows"));
+    followMenu_->setObjectName("followMenu");
     viewMenu->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>()) {
         viewMenu->addAction(dock->toggleViewAction());
@@ -351,24 +436,44 @@ void MainWindow::createDocks()
     traceView_ = new QTreeView;
     traceView_->setObjectName("traceView");
     traceView_->setModel(traceModel_);
+    bodySwatches_ = new BodyColourDelegate(traceView_);
+    traceView_->setItemDelegateForColumn(0, bodySwatches_);
     traceView_->setAlternatingRowColors(true);
     traceView_->setSelectionBehavior(QAbstractItemView::SelectRows);
     traceView_->setSelectionMode(QAbstractItemView::ExtendedSelection);
-    traceView_->setUniformRowHeights(true);
+    // Matrices take three lines (one row each), so rows differ in height.
+    traceView_->setUniformRowHeights(false);
+    traceView_->setWordWrap(false);
+    traceView_->setIndentation(12);   // three levels (stage, body, row) without losing the values' room
     traceView_->header()->setStretchLastSection(true);
+    // The formula is typeset in the pane below the table, not shown as raw LaTeX.
+    traceView_->setColumnHidden(TraceModel::FormulaColumn, true);
     connect(traceModel_, &QAbstractItemModel::modelReset, traceView_, [this] {
         traceView_->expandAll();
         for (int c = 0; c < TraceModel::FormulaColumn; ++c) {
             traceView_->resizeColumnToContents(c);
             // Long symbols (the J denominator terms) must not push the values off screen.
-            if (c == TraceModel::SymbolColumn || c == TraceModel::QuantityColumn) {
-                traceView_->setColumnWidth(c, std::min(traceView_->columnWidth(c), c == TraceModel::SymbolColumn ? 70 : 190));
-            }
+            if (c == TraceModel::SymbolColumn) traceView_->setColumnWidth(c, std::min(traceView_->columnWidth(c), 48));
         }
     });
+    formulaPane_ = new FormulaPane;
+    formulaPane_->setObjectName("formulaPane");
+    connect(traceView_->selectionModel(), &QItemSelectionModel::currentRowChanged, formulaPane_,
+            [this](const QModelIndex& current) { formulaPane_->showRow(current); });
+    // A new step (or a scrub) changes the values under the same selection.
+    connect(traceModel_, &QAbstractItemModel::dataChanged, formulaPane_,
+            [this] { formulaPane_->showRow(traceView_->currentIndex()); });
+    connect(traceModel_, &QAbstractItemModel::modelReset, formulaPane_,
+            [this] { formulaPane_->showRow(traceView_->currentIndex()); });
+    auto* traceSplit = new QSplitter(Qt::Vertical);
+    traceSplit->addWidget(traceView_);
+    traceSplit->addWidget(formulaPane_);
+    traceSplit->setStretchFactor(0, 4);
+    traceSplit->setStretchFactor(1, 1);
+    traceSplit->setSizes({600, 150});
     auto* traceDock = new QDockWidget(tr("Quantities of this step"), this);
     traceDock->setObjectName("traceDock");
-    traceDock->setWidget(traceView_);
+    traceDock->setWidget(traceSplit);
     addDockWidget(Qt::RightDockWidgetArea, traceDock);
 
     derivationView_ = new DerivationView;
@@ -415,6 +520,14 @@ void MainWindow::createDocks()
     codeDock_->setWidget(codeView_);
     addDockWidget(Qt::BottomDockWidgetArea, codeDock_);
     tabifyDockWidget(bodyPlotDock, codeDock_);
+
+    quantityPlots_ = new QuantityPlotPanel;
+    quantityPlots_->setObjectName("quantityPlotPanel");
+    quantityPlotDock_ = new QDockWidget(tr("Plot over time"), this);
+    quantityPlotDock_->setObjectName("quantityPlotDock");
+    quantityPlotDock_->setWidget(quantityPlots_);
+    addDockWidget(Qt::BottomDockWidgetArea, quantityPlotDock_);
+    tabifyDockWidget(codeDock_, quantityPlotDock_);
     plotDock->raise();
 
     accuracyPanel_ = new AccuracyPanel;
@@ -427,7 +540,17 @@ void MainWindow::createDocks()
     accuracyScroll->setWidgetResizable(true);
     accuracyScroll->setWidget(accuracyPanel_);
     accuracyScroll->setMinimumSize(200, 120);
-    accuracyDock->setWidget(accuracyScroll);
+    // Its second tab: the contact problems (issue 11), error against cost per model.
+    auto* contactStudy = new ContactStudyPanel;
+    contactStudy->setObjectName("contactStudyPanel");
+    auto* contactScroll = new QScrollArea;
+    contactScroll->setWidgetResizable(true);
+    contactScroll->setWidget(contactStudy);
+    auto* accuracyTabs = new QTabWidget;
+    accuracyTabs->setObjectName("accuracyTabs");
+    accuracyTabs->addTab(accuracyScroll, tr("Integrators"));
+    accuracyTabs->addTab(contactScroll, tr("Contacts"));
+    accuracyDock->setWidget(accuracyTabs);
     addDockWidget(Qt::RightDockWidgetArea, accuracyDock);
     tabifyDockWidget(derivationDock_, accuracyDock);
 
@@ -450,7 +573,20 @@ void MainWindow::restoreLayout()
 {
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
-    restoreState(settings.value("window/state").toByteArray());
+    if (settings.contains("window/state")) {
+        restoreState(settings.value("window/state").toByteArray());
+        return;
+    }
+    // The first start: once the window has its size, give the quantities table room
+    // for all its columns (before, after, frame, unit, source) and the lessons theirs.
+    // (resizeDocks before the window is laid out is overridden by the layout.)
+    QTimer::singleShot(0, this, [this] {
+        auto* lessons = findChild<QDockWidget*>(QStringLiteral("lessonsDock"));
+        auto* trace = findChild<QDockWidget*>(QStringLiteral("traceDock"));
+        if (lessons == nullptr || trace == nullptr) return;
+        resizeDocks({lessons, trace}, {std::max(220, width() * 15 / 100), std::max(560, width() * 45 / 100)},
+                    Qt::Horizontal);
+    });
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -481,11 +617,25 @@ bool MainWindow::openLesson(const QString& id)
 
 void MainWindow::onLessonRowChanged(int row)
 {
+    if (row < 0 || row >= lessons_.size()) return;
+    const Lesson& lesson = lessons_[row];
+    const SceneLoadResult loaded = loadSceneFile(lesson.scenePath);
+    if (!loaded.ok()) {
+        // The running scene stays, under its own name, and so does its row.
+        showSceneErrors(tr("Lesson \"%1\"").arg(lesson.title), loaded.errors);
+        const QSignalBlocker block(lessonList_);
+        int running = -1;
+        for (int r = 0; r < lessons_.size(); ++r) {
+            if (!currentLesson_.id.isEmpty() && lessons_[r].id == currentLesson_.id) running = r;
+        }
+        lessonList_->setCurrentRow(running);
+        if (running < 0) lessonList_->clearSelection();
+        return;
+    }
     setPlaying(false);
     alertLabel_->hide();
-    if (row < 0 || row >= lessons_.size()) return;
     focusBody_ = -1;
-    currentLesson_ = lessons_[row];
+    currentLesson_ = lesson;
 
     QFile text(currentLesson_.textPath);
     if (text.open(QIODevice::ReadOnly)) {
@@ -493,19 +643,12 @@ void MainWindow::onLessonRowChanged(int row)
     } else {
         lessonText_->setPlainText(currentLesson_.description);
     }
-    const SceneLoadResult loaded = loadSceneFile(currentLesson_.scenePath);
-    if (!loaded.ok()) {
-        lessonText_->setPlainText(tr("This lesson's scene cannot be loaded:\n\n") + loaded.errors.join('\n'));
-        alertLabel_->setText(tr("This lesson's scene cannot be loaded: %1").arg(loaded.errors.value(0)));
-        alertLabel_->show();
-        updateStatus();
-        return;
-    }
     QSettings().setValue("lesson/last", currentLesson_.id);
     session_.load(*loaded.scene);   // -> onSessionReset, onStateChanged
     accuracyPanel_->setScene(*loaded.scene, currentLesson_.id);
     sceneView_->resetView();
     setWindowTitle(tr("%1 — Rigid Body Workbook").arg(currentLesson_.title));
+    sceneStarted(*loaded.scene, QString());
 }
 
 bool MainWindow::openNewNumbers(quint64 seed, QString* error)
@@ -527,6 +670,7 @@ bool MainWindow::openNewNumbers(quint64 seed, QString* error)
     currentLesson_.title = tr("Lesson %1, new numbers (seed %2)").arg(lessonId.section('-', 0, 0).toInt()).arg(seed);
     session_.load(*generated.scene);   // -> onSessionReset, onStateChanged
     accuracyPanel_->setScene(*generated.scene, currentLesson_.id);
+    sceneStarted(*generated.scene, QString());
     sceneView_->resetView();
     setWindowTitle(tr("%1 — Rigid Body Workbook").arg(currentLesson_.title));
     statusBar()->showMessage(tr("New numbers: seed %1").arg(seed));
@@ -546,7 +690,13 @@ void MainWindow::onSessionReset()
     plotPanel_->clear();
     QStringList names;
     for (const BodyDef& b : session_.world()->scene().bodies) names << QString::fromStdString(b.name);
-    bodyPlotPanel_->setBodies(names);
+    QList<bool> fixed;
+    for (const BodyDef& b : session_.world()->scene().bodies) fixed << b.fixed;
+    bodyPlotPanel_->setBodies(names, fixed);
+    quantityPlots_->setScene(names, fixed);   // another scene's plots go
+    bodySwatches_->setBodies(names, fixed);
+    updateFollowMenu();
+    quantityPlots_->clearSamples();
     sceneView_->clearTrails();
     // Sample 0: the initial state's diagnostics, computed by the physics.
     plotPanel_->appendStep(session_.world()->time(), session_.world()->diagnostics());
@@ -560,6 +710,7 @@ void MainWindow::onStepRecorded(const StepTrace& trace)
 {
     plotPanel_->appendStep(trace.time, trace.diagnostics);
     bodyPlotPanel_->appendStep(trace.time, trace.diagnostics);
+    quantityPlots_->appendStep(trace);
     derivationDirty_ = true;
     traceDirty_ = true;
     checkDirty_ = true;
@@ -570,7 +721,14 @@ void MainWindow::onStateChanged()
     const World* world = session_.world();
     if (world == nullptr) return;
     const StepTrace* trace = session_.currentTrace();
-    sceneView_->setSnapshot(makeViewSnapshot(*world, trace));
+    ViewSnapshot snapshot = makeViewSnapshot(*world, trace);
+    // A queued push acts in the next step: drawn now, like the scene's own forces.
+    for (const auto& [p_W, f_W] : session_.pendingPushes()) {
+        ViewSnapshot::Force push{ViewSnapshot::ForceKind::Applied, world->scene().push.body, -1, p_W, f_W};
+        push.upcoming = true;
+        if (isFinite(p_W) && isFinite(f_W)) snapshot.forces.push_back(push);
+    }
+    sceneView_->setSnapshot(snapshot);
     sceneView_->setSpring(session_.springSegment());
     const bool playing = playTimer_->isActive();
     const bool panelsDue = clock_.panelsDue(playing);
@@ -588,6 +746,7 @@ void MainWindow::onStateChanged()
     // While playing, the actions and the status line change only at the table's
     // pace: every repainted widget is re-uploaded for the GL composition of the window.
     // (The parameter bar follows the session's parametersChanged, which a step never emits.)
+    if (panelsDue || !playing) scrubber_->sync();
     if (panelsDue) {
         updateActions();
         updateStatus();
@@ -642,6 +801,73 @@ void MainWindow::stepBack()
     } else {
         statusBar()->showMessage(tr("No earlier step in the history"), 2000);
     }
+}
+
+void MainWindow::updateFollowMenu()
+{
+    if (followMenu_ == nullptr || !session_.isLoaded()) return;
+    followMenu_->clear();
+    qDeleteAll(followMenu_->findChildren<QActionGroup*>(Qt::FindDirectChildrenOnly));
+    auto* group = new QActionGroup(followMenu_);
+    auto add = [&](const QString& text, int body) {
+        QAction* a = followMenu_->addAction(text);
+        a->setCheckable(true);
+        a->setChecked(body == sceneView_->followBody());
+        a->setData(body);
+        group->addAction(a);
+        connect(a, &QAction::triggered, sceneView_, [this, body] { sceneView_->setFollowBody(body); });
+    };
+    add(tr("No body (free camera)"), -1);
+    const std::vector<BodyDef>& bodies = session_.world()->scene().bodies;
+    for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
+        if (!bodies[static_cast<std::size_t>(b)].fixed) add(QString::fromStdString(bodies[static_cast<std::size_t>(b)].name), b);
+    }
+}
+
+bool MainWindow::plotRowOverTime(const QModelIndex& row, bool norm)
+{
+    const TraceEntry* e = traceModel_->entryAt(row);
+    if (e == nullptr || !session_.isLoaded()) {
+        statusBar()->showMessage(tr("Right-click a quantity's row (not a group) to plot it over time"), 3000);
+        return false;
+    }
+    const SceneDef& scene = session_.world()->scene();
+    QString label = QString::fromUtf8(e->info->text);
+    if (e->index >= 0 && std::strcmp(indexKindName(e->info->indexKind), "") != 0) {
+        label += QStringLiteral(" %1 %2").arg(QString::fromLatin1(indexKindName(e->info->indexKind))).arg(e->index);
+    }
+    if (e->body >= 0 && e->body < static_cast<int>(scene.bodies.size())) {
+        label += QStringLiteral(" (%1)").arg(QString::fromStdString(scene.bodies[static_cast<std::size_t>(e->body)].name));
+    }
+    quantityPlots_->addQuantity(QuantityKey{QString::fromLatin1(e->info->id), e->body, e->index}, label,
+                                QString::fromUtf8(e->info->unit), session_.history(), norm,
+                                QString::fromUtf8(e->info->text));
+    quantityPlotDock_->show();
+    quantityPlotDock_->raise();
+    return true;
+}
+
+bool MainWindow::goToStep(long k)
+{
+    setPlaying(false);
+    if (!session_.isLoaded()) return false;
+    if (k == session_.world()->stepIndex()) return true;
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    const bool reached = session_.goToStep(k);
+    QApplication::restoreOverrideCursor();
+    if (reached) {
+        alertLabel_->setVisible(!session_.status().ok);
+    } else if (k < session_.history().firstStep()) {
+        statusBar()->showMessage(tr("Step %1 is no longer recorded: the history keeps the last %2 steps (up to 1000, fewer for many bodies)")
+                                     .arg(k)
+                                     .arg(session_.history().size() - 1), 4000);
+    } else {
+        statusBar()->showMessage(tr("Step %1 not reached: stopped at step %2").arg(k).arg(session_.world()->stepIndex()), 4000);
+    }
+    scrubber_->sync();
+    // After Go (or Enter in the step box) the keys step and play again.
+    if (scrubber_->isAncestorOf(QApplication::focusWidget())) sceneView_->setFocus(Qt::OtherFocusReason);
+    return reached;
 }
 
 void MainWindow::setPlaying(bool playing)

@@ -8,8 +8,11 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QDoubleValidator>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPointer>
+#include <QTimer>
 
 #include <algorithm>
 
@@ -98,6 +101,52 @@ ParameterBar::ParameterBar(Session* session, QWidget* parent)
 
     connect(session_, &Session::parametersChanged, this, &ParameterBar::syncFromSession);
     syncFromSession();
+
+    // Enter and Escape in the boxes that take typed text hand the keys back (see
+    // setFocusReturnTarget); so does a pick in a list.
+    for (QObject* o : {static_cast<QObject*>(dtBox_->lineEdit()), static_cast<QObject*>(restitutionBox_),
+                       static_cast<QObject*>(frictionBox_)}) {
+        o->installEventFilter(this);
+    }
+    for (QComboBox* box : {speedBox_, integratorBox_}) {
+        connect(box, &QComboBox::activated, this, &ParameterBar::returnFocus);
+    }
+}
+
+void ParameterBar::returnFocus()
+{
+    // After the box has handled the key (Enter applies the value first).
+    QPointer<QWidget> target = focusTarget_;
+    QTimer::singleShot(0, this, [target] {
+        if (target) target->setFocus(Qt::OtherFocusReason);
+    });
+}
+
+bool ParameterBar::eventFilter(QObject* watched, QEvent* event)
+{
+    if (event->type() == QEvent::KeyPress && focusTarget_ != nullptr) {
+        const int key = static_cast<QKeyEvent*>(event)->key();
+        if (key == Qt::Key_Escape) {
+            // Discard what was typed. A box applies its text when it loses the focus, so
+            // the texts are reset to the session's values first, and the focus moves
+            // while the bar ignores its controls (syncing_).
+            syncing_ = true;
+            if (session_->isLoaded()) {
+                const SceneDef& scene = session_->world()->scene();
+                restitutionBox_->setValue(scene.restitution);
+                frictionBox_->setValue(scene.friction);
+                dtBox_->setEditText(QString::number(scene.dt, 'g', 10));
+            }
+            focusTarget_->setFocus(Qt::OtherFocusReason);
+            syncing_ = false;
+            syncFromSession();
+            return true;
+        }
+        if (key == Qt::Key_Return || key == Qt::Key_Enter) {
+            returnFocus();   // the box applies the value, then the focus moves
+        }
+    }
+    return QToolBar::eventFilter(watched, event);
 }
 
 double ParameterBar::speed() const

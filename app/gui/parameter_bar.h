@@ -37,6 +37,16 @@ public:
     // Shows the session's parameters (called when they change).
     void syncFromSession();
 
+    // Where the keys go after an edit: Enter (apply) or Escape (discard the typed text)
+    // in h, c or μ, and a pick in a drop-down list, hand the keyboard focus to this
+    // widget (the 3D view), so S, Space and the arrows step and play again instead of
+    // typing into the box.
+    void setFocusReturnTarget(QWidget* target) { focusTarget_ = target; }
+    QWidget* focusReturnTarget() const { return focusTarget_; }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 signals:
     void speedChanged(double speed);
     // A refused change, for the status bar: "h not changed: ...".
@@ -58,6 +68,9 @@ private:
     QDoubleSpinBox* restitutionBox_ = nullptr;
     QDoubleSpinBox* frictionBox_ = nullptr;
     bool syncing_ = false;   // the controls are being set from the session
+    QWidget* focusTarget_ = nullptr;
+
+    void returnFocus();
 };
 
 } // namespace rbw

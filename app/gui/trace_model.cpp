@@ -159,16 +159,31 @@ void TraceModel::rebuild(const SceneDef& scene)
                 if (stageNode < 0) stageNode = addChild(0, stageTitle(stage), -1);
                 rowOfEntry_[i] = addChild(stageNode, QString(), static_cast<int>(i));
             }
+            // Contacts grouped by pair: a pair with several contacts (the corners of a
+            // box on a plane, the points of a manifold) gets a node of its own, with
+            // one node per point under it.
+            auto samePair = [](const ContactHeader& a, const ContactHeader& b) {
+                return a.bodyA == b.bodyA && a.bodyB == b.bodyB && a.plane == b.plane;
+            };
+            int pairNode = -1;
             for (int k = 0; k < static_cast<int>(trace_.contacts.size()); ++k) {
                 const ContactHeader& c = trace_.contacts[k];
                 if (stageNode < 0) stageNode = addChild(0, stageTitle(stage), -1);
-                QString label = tr("contact %1: %2 ↔ %3 · %4")
-                                    .arg(k)
-                                    .arg(bodyOrPlane(c.bodyA, -1), bodyOrPlane(c.bodyB, c.plane),
-                                         QString::fromLatin1(c.feature));
+                const bool newPair = k == 0 || !samePair(c, trace_.contacts[k - 1]);
+                int points = 1;
+                while (k + points < static_cast<int>(trace_.contacts.size()) &&
+                       samePair(c, trace_.contacts[k + points])) {
+                    ++points;
+                }
+                const QString pair = QStringLiteral("%1 ↔ %2").arg(bodyOrPlane(c.bodyA, -1), bodyOrPlane(c.bodyB, c.plane));
+                if (newPair) {
+                    pairNode = points > 1 ? addChild(stageNode, tr("%1 · %2 contacts").arg(pair).arg(points), -1) : -1;
+                }
+                QString label = pairNode >= 0 ? tr("contact %1 · %2").arg(k).arg(QString::fromLatin1(c.feature))
+                                              : tr("contact %1: %2 · %3").arg(k).arg(pair, QString::fromLatin1(c.feature));
                 if (c.pointCount > 1) label += tr(" · average of %1 corners").arg(c.pointCount);
                 if (c.separating) label += tr(" · separating: no impulse");
-                const int contactNode = addChild(stageNode, label, -1);
+                const int contactNode = addChild(pairNode >= 0 ? pairNode : stageNode, label, -1);
                 for (size_t i = 0; i < trace_.entries.size(); ++i) {
                     const TraceEntry& e = trace_.entries[i];
                     if (e.info->stage == Stage::Collision && e.index == k) {
@@ -259,7 +274,12 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const
         switch (index.column()) {
         case QuantityColumn: return humanName(e);
         case SymbolColumn: return QString::fromUtf8(e.info->text);
-        case ValueColumn: return formatValue(e.value);
+        case BeforeColumn: {
+            TraceValue before;
+            if (!startValue(trace_, e.info->id, e.body, e.index, &before)) return {};
+            return formatValueLines(before);
+        }
+        case ValueColumn: return formatValueLines(e.value);
         case FrameColumn: return QString::fromLatin1(frameName(e.info->frame));
         case UnitColumn: return QString::fromUtf8(e.info->unit);
         case SourceColumn: {
@@ -274,19 +294,39 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const
         case FormulaColumn: return QString::fromUtf8(e.info->formula);
         }
         return {};
+    case Qt::TextAlignmentRole:
+        return QVariant(Qt::AlignLeft | Qt::AlignTop);
     case Qt::ToolTipRole:
         if (index.column() == SourceColumn) {
             return QString::fromStdString(sourceText(e));
+        }
+        if (index.column() == BeforeColumn) {
+            return tr("%1 at the start of step %2, the value this step starts from")
+                .arg(QString::fromUtf8(e.info->text))
+                .arg(trace_.step);
         }
         return tr("%1\nComputed in %2").arg(QString::fromUtf8(e.info->formula), QString::fromStdString(sourceText(e)));
     case Qt::BackgroundRole:
         if (changed_[n.entry]) return QBrush(QColor(255, 244, 196));
         return {};
     case Qt::FontRole:
-        if (index.column() == ValueColumn || index.column() == SourceColumn) return QFont(QStringLiteral("monospace"));
+        if (index.column() == ValueColumn || index.column() == BeforeColumn || index.column() == SourceColumn) {
+            return QFont(QStringLiteral("monospace"));
+        }
         return {};
     case IdRole:
         return QString::fromLatin1(e.info->id);
+    case FormulaLatexRole:
+        return QString::fromUtf8(e.info->formula);
+    case ValueLatexRole:
+        return latexValue(e.value);
+    case BeforeLatexRole: {
+        TraceValue before;
+        if (!startValue(trace_, e.info->id, e.body, e.index, &before)) return {};
+        return latexValue(before);
+    }
+    case NameRole:
+        return humanName(e);
     case LatexRole:
         return QString::fromUtf8(e.info->symbol) + QStringLiteral(" = ") + latexValue(e.value);
     case ChangedRole:
@@ -307,7 +347,8 @@ QVariant TraceModel::headerData(int section, Qt::Orientation orientation, int ro
     switch (section) {
     case QuantityColumn: return tr("Quantity");
     case SymbolColumn: return tr("Symbol");
-    case ValueColumn: return tr("Value");
+    case BeforeColumn: return tr("Before");
+    case ValueColumn: return tr("After");
     case FrameColumn: return tr("Frame");
     case UnitColumn: return tr("Unit");
     case SourceColumn: return tr("Source");

@@ -1,5 +1,7 @@
 // A tree model over one step's trace: stage -> body -> quantity rows, with columns
-// quantity, symbol, value, frame, unit, source (the physics statement that computed
+// quantity, symbol, before (the value at the start of the step, for the state
+// quantities x, v, r, L, R, I^-1, omega and the probe points: StepTrace::start),
+// after (the value the step computed), frame, unit, source (the physics statement that computed
 // the value: "explicit_euler.cpp:27", with sourceText's "physics/integrators/
 // explicit_euler.cpp:27" as its tooltip) and formula. It only presents the trace; it
 // never computes a number. When the next step has the same rows, only the values
@@ -21,7 +23,8 @@ public:
     enum Column {
         QuantityColumn,
         SymbolColumn,
-        ValueColumn,
+        BeforeColumn,
+        ValueColumn,   // "After": the value the step computed
         FrameColumn,
         UnitColumn,
         SourceColumn,
@@ -34,6 +37,10 @@ public:
         ChangedRole,                 // true when the value differs from the previous step's
         SourceFileRole,              // the computing statement's file, relative to the source tree
         SourceLineRole,              // and its line (1-based)
+        FormulaLatexRole,            // the catalogue's formula, LaTeX (for the typeset formula pane)
+        ValueLatexRole,              // the value the step computed, LaTeX
+        BeforeLatexRole,             // the value at the start of the step, LaTeX; invalid if none
+        NameRole,                    // the quantity's full name ("angular velocity of box")
     };
 
     explicit TraceModel(QObject* parent = nullptr);

@@ -7,7 +7,10 @@
 #include "physics/stages/correction_stage.h"
 #include "physics/stages/forces_stage.h"
 #include "physics/stages/integration_stage.h"
+#include "physics/stages/manifold_contact_stage.h"
+#include "physics/stages/manifold_position_stage.h"
 #include "physics/stages/probes_stage.h"
+#include "physics/stages/sleep_stage.h"
 
 #include <algorithm>
 #include <cassert>
@@ -26,6 +29,9 @@ const char* pipelineStageName(PipelineStage stage)
     case PipelineStage::BoxBox: return "box_box";
     case PipelineStage::BoxPlane: return "box_plane";
     case PipelineStage::Correction: return "correction";
+    case PipelineStage::ManifoldContacts: return "manifold_contacts";
+    case PipelineStage::ManifoldPositions: return "manifold_positions";
+    case PipelineStage::Sleep: return "sleep";
     case PipelineStage::Probes: return "probes";
     }
     return "?";
@@ -79,10 +85,23 @@ std::vector<PipelineEntry> buildPipeline(const SceneDef& scene, const std::vecto
     // Plane tests need a plane and a movable body.
     const bool planeTests = !scene.planes.empty() && (movableCount >= 1 || options.allStages);
 
+    // The manifold model (docs/collisions.md) solves its contacts before the integration,
+    // as loads, and fixes positions after it; the course model answers contacts after
+    // the integration, one impulse at a time.
+    const bool manifold = scene.contactModel == ContactModel::Manifold && (boxPairs || planeTests);
+    std::shared_ptr<ContactWorld> contactWorld;
+    if (manifold) {
+        contactWorld = std::make_shared<ContactWorld>();
+        contactWorld->settings = manifoldSettings(scene);
+    }
+
     std::vector<PipelineEntry> out;
     auto add = [&out](std::unique_ptr<PipelineStep> s) { out.emplace_back(std::move(s)); };
     if (gravity) add(std::make_unique<GravityStage>());
     add(std::make_unique<LoadsStage>(gravity));
+    // After the loads (the solver works on v + h F/M) and before the energy bound, which
+    // then counts the contact loads among the step's loads.
+    if (manifold) add(std::make_unique<ManifoldContactStage>(contactWorld, boxPairs, planeTests));
     if (energyCheck) add(std::make_unique<EnergyBoundStage>(mass));
     // One integration per integrator group that has a movable body.
     for (int g = 0; g < static_cast<int>(groups.names.size()); ++g) {
@@ -101,12 +120,18 @@ std::vector<PipelineEntry> buildPipeline(const SceneDef& scene, const std::vecto
     // Before the contact stages: a NaN pose would pass every overlap test.
     add(std::make_unique<FiniteCheckStage>());
     if (energyCheck) add(std::make_unique<EnergyCheckStage>());
-    if (boxPairs) add(std::make_unique<BoxBoxStage>());
-    if (planeTests) add(std::make_unique<BoxPlaneStage>());
-    if (boxPairs || planeTests) {
-        if (scene.positionCorrection) add(std::make_unique<CorrectionStage>());
-        // Anything the contact stages made non-finite.
+    if (manifold) {
+        add(std::make_unique<ManifoldPositionStage>(contactWorld));
+        if (contactWorld->settings.sleep) add(std::make_unique<SleepStage>(contactWorld));
         add(std::make_unique<FiniteCheckStage>());
+    } else {
+        if (boxPairs) add(std::make_unique<BoxBoxStage>());
+        if (planeTests) add(std::make_unique<BoxPlaneStage>());
+        if (boxPairs || planeTests) {
+            if (scene.positionCorrection) add(std::make_unique<CorrectionStage>());
+            // Anything the contact stages made non-finite.
+            add(std::make_unique<FiniteCheckStage>());
+        }
     }
     if (!scene.probes.empty()) add(std::make_unique<ProbesStage>());
     return out;

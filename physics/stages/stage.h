@@ -37,6 +37,10 @@ enum class PipelineStage {
     BoxBox,        // sweep-and-prune broad phase, SAT narrow phase, impulses
     BoxPlane,      // corners below each plane, impulses
     Correction,    // push penetrating bodies apart (position_correction)
+    // The manifold contact model (contact_model "manifold", physics/contact/):
+    ManifoldContacts,    // before the integration: manifolds, sequential impulses -> contact loads
+    ManifoldPositions,   // after the integration: the position fix (NGS), no velocity change
+    Sleep,               // bodies at rest go to sleep, touched ones wake
     Probes,        // probe points, when a trace is recorded
 };
 

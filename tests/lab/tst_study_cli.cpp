@@ -35,6 +35,7 @@ private slots:
     void blownUpRowHasNoNumbers();
     void badInput_data();
     void badInput();
+    void contactStudyCsv();
 };
 
 // Constant spin, T = 1, h = 0.1 and 0.05: 2 integrators x 2 dts = 4 rows in that order.
@@ -124,6 +125,18 @@ void TestStudyCli::badInput_data()
     QTest::newRow("a force") << QStringList{"study", one} << "rbw: " + one + ": forces:";
     QTest::newRow("missing file") << QStringList{"study", kLab + "nope.json"} << "rbw: " + kLab + "nope.json";
     QTest::newRow("no scene") << QStringList{"study"} << "rbw: study takes exactly one scene file";
+    // rbw contact-study PROBLEM
+    QTest::newRow("contact: unknown problem") << QStringList{"contact-study", "pile"}
+                                              << "rbw: contact-study: PROBLEM: unknown problem \"pile\" (resting-box, tower, rain)";
+    QTest::newRow("contact: iterations 0") << QStringList{"contact-study", "tower", "--iterations", "4,0"}
+                                           << "rbw: contact-study: --iterations: must be whole numbers from 1 to 1000, got 0";
+    QTest::newRow("contact: iterations text") << QStringList{"contact-study", "tower", "--iterations", "4,many"}
+                                              << "rbw: contact-study: --iterations: must be whole numbers, got \"many\"";
+    QTest::newRow("contact: dt negative") << QStringList{"contact-study", "tower", "--dt", "-0.01"}
+                                          << "rbw: contact-study: --dt: must be finite numbers > 0";
+    QTest::newRow("contact: no boxes") << QStringList{"contact-study", "rain", "--boxes", "0"}
+                                       << "rbw: contact-study: --boxes: must be a whole number from 1 to 10000, got 0";
+    QTest::newRow("contact: no problem") << QStringList{"contact-study"} << "rbw: contact-study takes exactly one problem";
 }
 
 void TestStudyCli::badInput()
@@ -134,6 +147,30 @@ void TestStudyCli::badInput()
     QCOMPARE(r.exitCode, 2);
     QVERIFY(r.out.isEmpty());
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
+}
+
+// rbw contact-study: one row per model x iterations x dt, course first; the numbers are
+// the runner's (tst_contact_study checks them), here only their shape: T = 1 s at
+// h = 1/60 is 60 steps, the resting box has a drift, and a blown-up row never shows NaN.
+void TestStudyCli::contactStudyCsv()
+{
+    const auto r = runRbw({"contact-study", "resting-box", "--iterations", "1,4", "--dt", "0.0166666666666666667",
+                           "--t-end", "1"});
+    QCOMPARE(r.exitCode, 0);
+    const QList<QStringList> rows = parseCsv(r.out);
+    QCOMPARE(rows.size(), 4);
+    QCOMPARE(rows[0].join(','), QStringLiteral("problem,model,iterations,dt,steps,t_end,deepest_overlap,deepest_below,"
+                                               "drift,energy_gained,kinetic_energy_end,moving_end,ns_per_step,status"));
+    QCOMPARE(rows[1].mid(0, 6), (QStringList{"resting-box", "course", "", "0.016666666666666666", "60", "1"}));
+    QCOMPARE(rows[2].mid(0, 3), (QStringList{"resting-box", "manifold", "1"}));
+    QCOMPARE(rows[3].mid(0, 3), (QStringList{"resting-box", "manifold", "4"}));
+    for (int i = 1; i < 4; ++i) {
+        QCOMPARE(rows[i].size(), 14);
+        QCOMPARE(rows[i].last(), QStringLiteral("ok"));
+        QVERIFY(!rows[i][8].isEmpty());   // a resting box has a drift
+        QVERIFY(!r.out.contains("nan") && !r.out.contains("inf"));
+    }
+    QVERIFY(r.err.contains("rbw: contact-study: 3/3 runs"));
 }
 
 QTEST_MAIN(TestStudyCli)

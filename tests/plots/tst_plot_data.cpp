@@ -6,6 +6,8 @@
 #include "app/gui/plots/plot_catalogue.h"
 #include "app/gui/plots/plot_decimation.h"
 #include "app/gui/plots/plot_series.h"
+#include "app/gui/plots/quantity_series.h"
+#include "physics/quantities.h"
 
 #include <QSet>
 #include <QTemporaryDir>
@@ -54,6 +56,9 @@ private slots:
     void strideKeepsWithinBudget_data();
     void strideKeepsWithinBudget();
     void decimationKeepsTheEnvelope();
+    void quantitySeriesReadsTheTrace_data();
+    void quantitySeriesReadsTheTrace();
+    void quantitySeriesSkipsNonFinite();
 };
 
 void TestPlotData::catalogueIdsAreUniqueAndFound()
@@ -329,6 +334,74 @@ void TestPlotData::decimationKeepsTheEnvelope()
     double maxThinned = -1e300;
     for (int i = 0; i < 5000; i += stride) maxThinned = std::max(maxThinned, data.value(PlotQuantity::KineticTranslational, i));
     QVERIFY(maxThinned < 50.0);
+}
+
+// Plot over time's data: the entry of (id, body, index) in each step's trace, as
+// recorded; steps without it (a contact that is not there) have no sample; CSV
+// numbers read back bit for bit.
+void TestPlotData::quantitySeriesReadsTheTrace_data()
+{
+    QTest::addColumn<int>("body");
+    QTest::addColumn<int>("index");
+    QTest::addColumn<int>("expectedSamples");
+    QTest::newRow("omega of body 0 (every step)") << 0 << -1 << 5;
+    QTest::newRow("contact 1 of body 0 (steps 1 and 3)") << 0 << 1 << 2;
+    QTest::newRow("body 1: not in the trace") << 1 << -1 << 0;
+}
+
+void TestPlotData::quantitySeriesReadsTheTrace()
+{
+    QFETCH(int, body);
+    QFETCH(int, index);
+    QFETCH(int, expectedSamples);
+    const QString id = index < 0 ? QStringLiteral("angular_velocity") : QStringLiteral("normal");
+    rbw::QuantitySeries series(rbw::QuantityKey{id, body, index}, "q", "u");
+    for (int k = 0; k < 5; ++k) {
+        rbw::StepTrace t;
+        t.step = k;
+        t.time = 0.1 * (k + 1);
+        t.add(rbw::q::angular_velocity, 0, rbw::Vec3(k, 1.0 / 3.0, -k), -1);
+        if (k % 2 == 1) t.add(rbw::q::contact_normal, 0, rbw::Vec3(0, 1, 0.1 * k), 1);
+        t.add(rbw::q::contact_normal, 0, rbw::Vec3(0, 1, 0), 0);   // another contact: not ours
+        series.append(t);
+    }
+    QCOMPARE(series.sampleCount(), expectedSamples);
+    if (expectedSamples == 0) return;
+    QCOMPARE(series.componentCount(), 3);
+    if (index < 0) {
+        QCOMPARE(series.points(1).last(), QPointF(0.5, 1.0 / 3.0));   // exactly the recorded double
+        QCOMPARE(series.points(-1).first().y(), std::sqrt(0.0 + 1.0 / 9.0 + 0.0));
+    } else {
+        QCOMPARE(series.samples()[0].step, 1L);
+        QCOMPARE(series.samples()[1].step, 3L);
+        QVERIFY(series.sampleAt(2) == nullptr);
+    }
+    // Back to step 2: only steps k <= 2 stay.
+    rbw::QuantitySeries copy = series;
+    copy.truncateAfter(2);
+    for (const auto& sample : copy.samples()) QVERIFY(sample.step <= 2);
+    // CSV: the numbers read back bit for bit.
+    const QList<QByteArray> lines = series.csv(true).trimmed().split('\n');
+    QCOMPARE(lines.size(), expectedSamples + 1);
+    const QList<QByteArray> last = lines.last().split(',');
+    QCOMPARE(last.size(), 2 + 3 + 1);
+    QCOMPARE(last[3].toDouble(), series.samples().back().values[1]);
+}
+
+void TestPlotData::quantitySeriesSkipsNonFinite()
+{
+    rbw::QuantitySeries series(rbw::QuantityKey{"angular_velocity", 0, -1}, "ω", "rad/s");
+    rbw::StepTrace t;
+    t.step = 0;
+    t.time = 0.01;
+    t.add(rbw::q::angular_velocity, 0, rbw::Vec3(std::numeric_limits<double>::quiet_NaN(), 0, 0), -1);
+    QVERIFY(!series.append(t));   // never drawn
+    QCOMPARE(series.sampleCount(), 0);
+    t.entries.clear();
+    t.add(rbw::q::angular_velocity, 0, rbw::Vec3(1, 2, 3), -1);
+    QVERIFY(series.append(t));
+    QVERIFY(!series.append(t));   // the same step twice: refused
+    QCOMPARE(series.sampleCount(), 1);
 }
 
 QTEST_GUILESS_MAIN(TestPlotData)

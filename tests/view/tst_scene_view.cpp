@@ -81,12 +81,12 @@ double saturatedFraction(const QImage& img)
     return double(count) / (double(img.width()) * img.height());
 }
 
-// True if a pixel of the 3x3 block around `at` is colour c shaded by a factor k in
-// [0.4, 1.05] (the lit shader's range), to within 6/255 per channel.
-bool bodyColourNear(const QImage& img, QPoint at, view::Rgba c)
+// True if a pixel of the (2r+1)x(2r+1) block around `at` is colour c shaded by a
+// factor k in [0.4, 1.05] (the lit shader's range), to within 6/255 per channel.
+bool bodyColourNear(const QImage& img, QPoint at, view::Rgba c, int r = 1)
 {
-    for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
+    for (int dy = -r; dy <= r; ++dy) {
+        for (int dx = -r; dx <= r; ++dx) {
             const QPoint p = at + QPoint(dx, dy);
             if (!img.rect().contains(p)) continue;
             double k = 0.0;
@@ -136,6 +136,8 @@ private slots:
     void trailsFollowAndReset();
     void springIsDrawn();
     void manyBoxesFrameRate();
+    void cameraFollowsABody();
+    void infoOverlayAndStateArrows();
 };
 
 void TestSceneView::contextIs33Core()
@@ -201,10 +203,12 @@ void TestSceneView::rendersLesson()
         QVERIFY(!insideBox(picked, hit->hit_W, -1e-6));
         if (!everyBodyVisible) continue;
         // The pixels there are the picked body's colour, shaded (not the background).
-        // A box's dark outline or an arrow may cross the centre, so one pixel of the 3x3
-        // around it must match. Lesson 4's walls, seen from behind, tint everything a
-        // little, so this is checked only in the other lessons.
-        QVERIFY2(bodyColourNear(img, pixelOf(centre), view::bodyColour(b, body.fixed)),
+        // A box's dark outline or an arrow seen through the box (an impulse ends at the
+        // contact point, so in lesson 3 it runs through B's centre) may cross the centre,
+        // so one pixel of the 13x13 around it (an arrow is about 7 px wide here) must
+        // match. Lesson 4's walls, seen from behind, tint everything a little, so this
+        // is checked only in the other lessons.
+        QVERIFY2(bodyColourNear(img, pixelOf(centre), view::bodyColour(b, body.fixed, body.name), 6),
                  qPrintable(QString("body %1: pixel %2 is not its colour").arg(b).arg(img.pixelColor(pixelOf(centre)).name())));
     }
     // Negative control for the colour check: the sky in the top-left corner is not body 0.
@@ -441,6 +445,64 @@ void TestSceneView::manyBoxesFrameRate()
     const double fps = 1000.0 * (view.framesRendered() - before) / double(timer.elapsed());
     qInfo("64 boxes at 1366x768: %.1f frames/s (%s)", fps, qPrintable(view.glVersionString()));
     QVERIFY(view.framesRendered() > before);
+}
+
+// View → Camera follows: the orbit target is the followed body's centre in every
+// new state (lesson 7's boxes fall out of the default framing); -1 stops it.
+void TestSceneView::cameraFollowsABody()
+{
+    Stepped s = stepLesson("07-bounce", 1);
+    SceneView view;
+    showView(view);
+    view.setSnapshot(s.snapshot());
+    const Vec3 before = view.camera().target();
+    view.setFollowBody(2);
+    QVERIFY(view.camera().target() == s.world->states()[2].x_W);
+    for (int k = 0; k < 40; ++k) QVERIFY(s.world->step(&s.trace).ok);
+    view.setSnapshot(s.snapshot());
+    QVERIFY(view.camera().target() == s.world->states()[2].x_W);
+    QVERIFY(view.camera().target() != before);
+    QVERIFY(view.infoText().contains(QString::fromStdString(s.world->scene().bodies[2].name)));
+    // Stop following: the target stays where it is while the body moves on.
+    view.setFollowBody(-1);
+    const Vec3 held = view.camera().target();
+    for (int k = 0; k < 10; ++k) QVERIFY(s.world->step(&s.trace).ok);
+    view.setSnapshot(s.snapshot());
+    QVERIFY(view.camera().target() == held);
+    QVERIFY(!(held == s.world->states()[2].x_W));
+    // An index that is not a body is refused.
+    view.setFollowBody(99);
+    QCOMPARE(view.followBody(), -1);
+}
+
+// The info line names the step Step takes next, t, h, the integrator and E (the
+// trace's diagnostics), and the v/ω/L arrows appear only when switched on, drawn
+// from the world's state.
+void TestSceneView::infoOverlayAndStateArrows()
+{
+    Stepped s = stepLesson("05-spinning", 10);
+    SceneView view;
+    showView(view);
+    view.setSnapshot(s.snapshot());
+    const QString info = view.infoText();
+    QVERIFY2(info.contains("step 10") && info.contains("h = 0.01 s") &&
+                 info.contains(QString::fromStdString(s.world->scene().integrator)),
+             qPrintable(info));
+    QVERIFY2(info.contains(QStringLiteral("E = %1 J").arg(s.trace.diagnostics.total, 0, 'g', 7)), qPrintable(info));
+    auto count = [&view](view::ArrowKind kind) {
+        int n = 0;
+        for (const view::ArrowRecord& a : view.currentArrows()) n += a.kind == kind ? 1 : 0;
+        return n;
+    };
+    QCOMPARE(count(view::ArrowKind::AngularVelocity), 0);
+    view.setShowAngularVelocity(true);
+    view.setShowAngularMomentum(true);
+    QCOMPARE(count(view::ArrowKind::AngularVelocity), 2);
+    QCOMPARE(count(view::ArrowKind::AngularMomentum), 2);
+    QCOMPARE(count(view::ArrowKind::Velocity), 0);   // both cubes spin in place: v = 0, no arrow
+    const QImage img = view.grabFramebuffer();
+    savePng(img, "05_state_arrows");
+    QVERIFY(distinctColours(img) > 300);
 }
 
 QTEST_MAIN(TestSceneView)

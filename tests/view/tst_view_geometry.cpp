@@ -53,6 +53,8 @@ private slots:
     void lesson1WithoutTraceHasProbesButNoArrows();
     void lesson3ContactAtItsCollisionStep();
     void lesson4GravityArrowsAtTheCentres();
+    void impulseArrowsAreTheTracesImpulses();
+    void stateArrowsAreTheState();
     void badTraceEntriesAreSkipped();
     void rayBoxHit_data();
     void rayBoxHit();
@@ -106,12 +108,26 @@ void TestViewGeometry::lesson1ForceArrowIsTheTracesForce()
 
 void TestViewGeometry::lesson1WithoutTraceHasProbesButNoArrows()
 {
-    // Before the first step: no trace, so no force arrows; the probes come from
-    // World::probe() at rest, p = p0 and v_p = 0.
+    // Before the first step: no trace; the force of step 0 is drawn before the step
+    // that applies it, as the scene defines it (f = (1, 1, 0) N at p = (0.3, 0.5,
+    // 0.25) m, lessons/01-one-step/scene.json); the probes come from World::probe()
+    // at rest, p = p0 and v_p = 0.
     World w(lessonScene("01-one-step/scene.json"));
     const ViewSnapshot s = makeViewSnapshot(w, nullptr);
     QVERIFY(!s.hasTrace);
-    QVERIFY(s.forces.empty());
+    QCOMPARE(s.nextStep, 0L);
+    QCOMPARE(int(s.forces.size()), 1);
+    QVERIFY(s.forces[0].upcoming);
+    QVERIFY(s.forces[0].f_W == w.scene().forces[0].f_W);
+    QVERIFY(near(s.forces[0].f_W, Vec3(1, 1, 0), 0.0));
+    QVERIFY(near(s.forces[0].origin_W, Vec3(0.3, 0.5, 0.25), 0.0));
+    // After the step the force acted and does not act again: it is the trace's, done.
+    StepTrace t;
+    QVERIFY(w.step(&t).ok);
+    const ViewSnapshot after = makeViewSnapshot(w, &t);
+    QCOMPARE(int(after.forces.size()), 1);
+    QVERIFY(!after.forces[0].upcoming);
+    QVERIFY(after.forces[0].f_W == std::get<Vec3>(t.find("applied_force", 0, 0)->value));
     QVERIFY(s.contacts.empty());
     QCOMPARE(int(s.probes.size()), 2);
     QVERIFY(near(s.probes[1].p_W, Vec3(0.3, 0.5, 0.25), 1e-12));
@@ -165,6 +181,115 @@ void TestViewGeometry::lesson4GravityArrowsAtTheCentres()
     }
 }
 
+// Lesson 7's friction box (c 0.6, mu 0.5 against the ground): at its first contact
+// with an impulse, the view's arrows are the trace's numbers. J n is the trace's J
+// times its n; the friction impulse J_t t is the trace's row; the total is their
+// sum, which is what impulse.cpp applies to A, so M_A times the trace's Δv_A gives it
+// back (to round-off). Each arrow ends at p, is scaled like the others of its unit,
+// and the normal starts at p and points into A.
+void TestViewGeometry::impulseArrowsAreTheTracesImpulses()
+{
+    World w(lessonScene("07-bounce/scene.json"));
+    int frictionBody = -1;
+    for (int b = 0; b < int(w.scene().bodies.size()); ++b) {
+        if (w.scene().bodies[b].name == "friction") frictionBody = b;
+    }
+    QVERIFY(frictionBody >= 0);
+    StepTrace t;
+    int contact = -1;
+    for (int k = 0; k < 3000 && contact < 0; ++k) {
+        QVERIFY(w.step(&t).ok);
+        for (int c = 0; c < int(t.contacts.size()); ++c) {
+            const TraceEntry* f = t.find("friction_impulse", frictionBody, c);
+            if (f != nullptr && std::get<Vec3>(f->value).norm() > 0.0 && !t.contacts[c].separating) contact = c;
+        }
+    }
+    QVERIFY2(contact >= 0, "the friction box never slid on the ground");
+    const ViewSnapshot s = makeViewSnapshot(w, &t);
+    const ViewSnapshot::Contact* c = nullptr;
+    for (const ViewSnapshot::Contact& x : s.contacts) {
+        if (x.index == contact) c = &x;
+    }
+    QVERIFY(c != nullptr);
+    QCOMPARE(c->bodyA, frictionBody);
+    const double J = std::get<double>(t.find("impulse", frictionBody, contact)->value);
+    const Vec3 n = std::get<Vec3>(t.find("normal", frictionBody, contact)->value);
+    const Vec3 Jt = std::get<Vec3>(t.find("friction_impulse", frictionBody, contact)->value);
+    const Vec3 dv = std::get<Vec3>(t.find("delta_v_a", frictionBody, contact)->value);
+    QVERIFY(c->hasFriction);
+    QVERIFY(c->J == J);
+    QVERIFY(c->impulse_W == Vec3(J * n));
+    QVERIFY(c->friction_W == Jt);
+    QVERIFY(c->total_W == Vec3(J * n + Jt));
+    // Independent: what A's velocity changed by in this contact, times M_A.
+    const double M = w.scene().bodies[frictionBody].mass;
+    QVERIFY2((M * dv - c->total_W).norm() <= 1e-12 * c->total_W.norm(),
+             qPrintable(text(M * dv) + " vs " + text(c->total_W)));
+    // Negative control: the normal impulse alone is not what was applied.
+    QVERIFY((M * dv - c->impulse_W).norm() > 1e-6 * c->total_W.norm());
+
+    const view::FrameGeometry g = view::buildFrameGeometry(s, {}, view::FrameOptions{});
+    const double scale = view::arrowScale(g.scales.maxImpulse, g.scales.refLength);
+    int seen = 0;
+    for (const view::ArrowRecord& a : g.arrows) {
+        if (a.index != contact || a.body != frictionBody) continue;
+        switch (a.kind) {
+        case view::ArrowKind::NormalImpulse:
+            QVERIFY(a.value == c->impulse_W);
+            break;
+        case view::ArrowKind::FrictionImpulse:
+            QVERIFY(a.value == c->friction_W);
+            break;
+        case view::ArrowKind::TotalImpulse:
+            QVERIFY(a.value == c->total_W);
+            break;
+        case view::ArrowKind::Normal:
+            QVERIFY(a.from_W == c->p_W);
+            QVERIFY((a.to_W - a.from_W).normalized().dot(n) > 1.0 - 1e-12);
+            ++seen;
+            continue;
+        default:
+            continue;
+        }
+        ++seen;
+        QVERIFY(a.to_W == c->p_W);   // the impulse ends at the contact point
+        QVERIFY(near(a.to_W - a.from_W, scale * a.value, 1e-12 * g.scales.refLength));
+    }
+    QCOMPARE(seen, 4);   // n, J n, J_t t and their sum
+}
+
+// The v, ω and L arrows are the world's state at each body's centre, drawn only when
+// asked for (View menu), and each kind's longest is one reference length.
+void TestViewGeometry::stateArrowsAreTheState()
+{
+    World w(lessonScene("05-spinning/scene.json"));
+    StepTrace t;
+    for (int k = 0; k < 10; ++k) QVERIFY(w.step(&t).ok);
+    const ViewSnapshot s = makeViewSnapshot(w, &t);
+    view::FrameOptions off;
+    for (const view::ArrowRecord& a : view::buildFrameGeometry(s, {}, off).arrows) {
+        QVERIFY(a.kind != view::ArrowKind::Velocity && a.kind != view::ArrowKind::AngularVelocity &&
+                a.kind != view::ArrowKind::AngularMomentum);
+    }
+    view::FrameOptions on;
+    on.velocity = on.angularVelocity = on.angularMomentum = true;
+    const view::FrameGeometry g = view::buildFrameGeometry(s, {}, on);
+    int omegaArrows = 0;
+    double longest = 0.0;
+    for (const view::ArrowRecord& a : g.arrows) {
+        if (a.kind != view::ArrowKind::AngularVelocity && a.kind != view::ArrowKind::AngularMomentum) continue;
+        const BodyState& st = w.states()[a.body];
+        QVERIFY(a.from_W == st.x_W);
+        QVERIFY(a.value == (a.kind == view::ArrowKind::AngularVelocity ? st.omega_W : st.L_W));
+        if (a.kind == view::ArrowKind::AngularVelocity) {
+            ++omegaArrows;
+            longest = std::max(longest, (a.to_W - a.from_W).norm());
+        }
+    }
+    QCOMPARE(omegaArrows, 2);   // both cubes spin (lessons/05-spinning)
+    QVERIFY(std::abs(longest - g.scales.refLength) <= 1e-12 * g.scales.refLength);
+}
+
 void TestViewGeometry::badTraceEntriesAreSkipped()
 {
     // A hand-made trace: a NaN force, a force on a body that does not exist, a
@@ -184,9 +309,13 @@ void TestViewGeometry::badTraceEntriesAreSkipped()
     t.add(q::probe_position, 0, Vec3(nan, 0, 0), 0);
     t.add(q::point_velocity, 0, Vec3(0, 0, 0), 0);
     const ViewSnapshot s = makeViewSnapshot(w, &t);
-    QCOMPARE(int(s.forces.size()), 1);
-    QCOMPARE(s.forces[0].index, 2);
-    QVERIFY(near(s.forces[0].f_W, Vec3(0, 0, 3), 0.0));
+    // The scene's own force of step 0 (upcoming: the world has not stepped) and the
+    // one good trace force.
+    QCOMPARE(int(s.forces.size()), 2);
+    QVERIFY(s.forces[0].upcoming);
+    QVERIFY(!s.forces[1].upcoming);
+    QCOMPARE(s.forces[1].index, 2);
+    QVERIFY(near(s.forces[1].f_W, Vec3(0, 0, 3), 0.0));
     QVERIFY(s.contacts.empty());
     for (const ViewSnapshot::Probe& p : s.probes) QVERIFY(isFinite(p.p_W) && isFinite(p.v_W));
     QCOMPARE(int(s.probes.size()), 0);   // probe 0 had a NaN position, probe 1 nothing

@@ -1,5 +1,7 @@
 #include "app/gui/accuracy/accuracy_panel.h"
 
+#include "app/gui/accuracy/log_axes.h"
+
 #include "app/core/study_csv.h"
 #include "app/gui/accuracy/study_table_model.h"
 #include "physics/integrator_registry.h"
@@ -44,15 +46,6 @@ QString defaultDtText()
 }
 
 // A log axis range around [lo, hi] with whole decades at both ends.
-void setDecades(QLogValueAxis* axis, double lo, double hi)
-{
-    const double a = std::pow(10.0, std::floor(std::log10(lo)));
-    double b = std::pow(10.0, std::ceil(std::log10(hi)));
-    if (b <= a) b = a * 10.0;
-    axis->setRange(a, b);
-    axis->setMinorTickCount(0);
-}
-
 // Eight distinguishable colours (Tableau 10), one per integrator in catalogue order,
 // so a method keeps its colour from one study to the next.
 QColor integratorColour(const QString& name)
@@ -140,7 +133,7 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent)
     chart_->legend()->setAlignment(Qt::AlignRight);
     chartView_ = new QChartView(chart_, this);
     chartView_->setRenderHint(QPainter::Antialiasing);
-    chartView_->setMinimumSize(480, 420);
+    chartView_->setMinimumSize(320, 320);
 
     model_ = new StudyTableModel(this);
     table_ = new QTableView(this);
@@ -155,9 +148,10 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent)
     splitter->setStretchFactor(1, 2);
     splitter->setSizes({600, 300});
 
-    auto* layout = new QHBoxLayout(this);
-    layout->addWidget(left);
-    layout->addWidget(splitter, 1);
+    controls_ = left;
+    mainLayout_ = new QBoxLayout(QBoxLayout::LeftToRight, this);
+    mainLayout_->addWidget(left);
+    mainLayout_->addWidget(splitter, 1);
 
     watcher_ = new QFutureWatcher<lab::StudyResult>(this);
     connect(watcher_, &QFutureWatcher<lab::StudyResult>::finished, this, &AccuracyPanel::onFinished);
@@ -169,6 +163,35 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent)
 
     redraw();
     updateButtons();
+}
+
+bool AccuracyPanel::event(QEvent* e)
+{
+    // In the app the panel sits in a scroll area: follow the width of its viewport.
+    if (e->type() == QEvent::ParentChange && parentWidget() != nullptr) parentWidget()->installEventFilter(this);
+    if (e->type() == QEvent::Resize || e->type() == QEvent::Show) {
+        fitLayout(parentWidget() != nullptr ? parentWidget()->width() : width());
+    }
+    return QWidget::event(e);
+}
+
+bool AccuracyPanel::eventFilter(QObject* watched, QEvent* e)
+{
+    if (watched == parentWidget() && e->type() == QEvent::Resize) fitLayout(parentWidget()->width());
+    return QWidget::eventFilter(watched, e);
+}
+
+void AccuracyPanel::fitLayout(int availableWidth)
+{
+    if (mainLayout_ == nullptr || controls_ == nullptr) return;
+    // Side by side only when the chart keeps at least its minimum width beside the settings.
+    const int sideBySide = controls_->sizeHint().width() + chartView_->minimumWidth() + 60;
+    const QBoxLayout::Direction wanted = availableWidth >= sideBySide ? QBoxLayout::LeftToRight
+                                                                      : QBoxLayout::TopToBottom;
+    if (mainLayout_->direction() != wanted) {
+        mainLayout_->setDirection(wanted);
+        redraw();   // the axis titles follow the width (see redraw)
+    }
 }
 
 AccuracyPanel::~AccuracyPanel()
@@ -365,11 +388,17 @@ void AccuracyPanel::redraw()
     auto* xAxis = new QLogValueAxis;
     xAxis->setBase(10.0);
     xAxis->setLabelFormat("%g");
-    xAxis->setTitleText(costTitle());
+    // Docked (narrow), the long cost title would be cut before its unit: a short one
+    // there, the whole definition in the tooltip. Tick labels are never elided.
+    const bool narrow = mainLayout_ != nullptr && mainLayout_->direction() == QBoxLayout::TopToBottom;
+    xAxis->setTitleText(narrow ? QStringLiteral("cost to reach T [ms]") : costTitle());
+    chartView_->setToolTip(costTitle());
+    xAxis->setTruncateLabels(false);
     auto* yAxis = new QLogValueAxis;
     yAxis->setBase(10.0);
     yAxis->setLabelFormat("%.0e");
     yAxis->setTitleText(metricTitle(errorMetric()));
+    yAxis->setTruncateLabels(false);
     chart_->addAxis(xAxis, Qt::AlignBottom);
     chart_->addAxis(yAxis, Qt::AlignLeft);
     if (front_.pointCount() == 0) {

@@ -21,6 +21,7 @@
 
 class QChart;
 class QChartView;
+class QBoxLayout;
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
@@ -79,7 +80,14 @@ signals:
     void studyFinished();                     // completed or cancelled
     void progressChanged(int done, int total);
 
+protected:
+    // Layout only: the settings beside the chart when the panel is wide, above it when
+    // narrow (docked), so the chart and its axis titles never sit off the right edge.
+    bool event(QEvent* e) override;
+    bool eventFilter(QObject* watched, QEvent* e) override;
+
 private:
+    void fitLayout(int availableWidth);
     void onRunClicked();
     void onFinished();
     void onProgress(int done, int total);
@@ -97,6 +105,8 @@ private:
     QString label_;
     double timingBudget_ = 0.02;
 
+    QBoxLayout* mainLayout_ = nullptr;
+    QWidget* controls_ = nullptr;
     QLabel* sceneLabel_ = nullptr;
     QList<QCheckBox*> integratorBoxes_;
     QLineEdit* dtEdit_ = nullptr;

@@ -1,5 +1,7 @@
 #include "app/gui/check/check_panel.h"
 
+#include "app/core/atomic_file.h"
+
 #include "app/gui/check/check_model.h"
 #include "physics/scene.h"
 #include "physics/trace.h"
@@ -15,7 +17,6 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSplitter>
 #include <QStyledItemDelegate>
 #include <QTableView>
@@ -191,17 +192,7 @@ bool CheckPanel::selectNextEmpty()
 
 bool CheckPanel::saveAnswers(const QString& path, QString* error)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        if (error) *error = tr("%1: %2").arg(path, file.errorString());
-        return false;
-    }
-    file.write(model_->answersJson());
-    if (!file.commit()) {
-        if (error) *error = tr("%1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return writeFileAtomically(path, model_->answersJson(), error);
 }
 
 bool CheckPanel::loadAnswers(const QString& path, QString* error)

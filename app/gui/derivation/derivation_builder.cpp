@@ -6,13 +6,16 @@
 #include "app/core/value_format.h"
 #include "app/gui/derivation/derivation_fallback.h"
 #include "app/gui/derivation/derivation_template.h"
+#include "app/gui/derivation/integrator_sections.h"
 #include "app/gui/derivation/trace_lookup.h"
+#include "physics/integrator_registry.h"
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rbw {
@@ -37,8 +40,11 @@ public:
 
     QStringList errors;
     QStringList notes;
+    std::vector<DerivationRow> rows;
 
 private:
+    QString integration(const TemplateNode& n, const Context& ctx);
+    QString integratorOf(const Context& ctx) const;
     QString node(const TemplateNode& n, const Context& ctx);
     QString loop(const TemplateNode& n, const Context& ctx);
     bool condition(const TemplateNode& n, const Context& ctx);
@@ -131,6 +137,13 @@ QString Expander::metaText(const Placeholder& p, const Context& ctx, int line, b
         return QString::number(trace_.step);
     } else if (p.name == QLatin1String("t")) {
         return formatNumber(trace_.time, digits_);
+    } else if (p.name == QLatin1String("integrator_id")) {
+        return integratorOf(ctx);
+    } else if (p.name == QLatin1String("integrator")) {
+        const QString name = integratorOf(ctx);
+        if (name.isEmpty()) return QStringLiteral("several integrators");
+        const IntegratorInfo* info = findIntegrator(name.toStdString());
+        return info != nullptr ? QString::fromUtf8(info->title) : name;
     } else if (inContact) {
         const ContactHeader& h = trace_.contacts[k];
         if (p.name == QLatin1String("A")) return bodyLabel(scene_, h.bodyA);
@@ -167,6 +180,22 @@ QString Expander::valueLatex(const Placeholder& p, const Context& ctx, int line,
     }
 
     const std::string id = p.name.toStdString();
+    if (p.prefix == QLatin1String("start")) {
+        // The value at the start of the step (StepTrace::start), before this step changed it.
+        const int b = resolveBody(p.body, ctx, line, &problem);
+        if (!problem.isEmpty()) return missing(shown, problem, line, true);
+        if (b < 0) return missing(shown, QStringLiteral("which body? use @name or @foreach body"), line, true);
+        const int index = indexKindOf(id) == IndexKind::Probe ? (p.index >= 0 ? p.index : ctx.look.probe) : -1;
+        TraceValue v;
+        if (!startValue(trace_, id, b, index, &v)) {
+            return missing(shown, QStringLiteral("no start-of-step value here"), line, true);
+        }
+        if (!isFiniteValue(v)) return missing(shown, QStringLiteral("not finite, the step blew up"), line, true);
+        const QString out = selectLatex(v, p.selector, digits_, &problem);
+        if (!problem.isEmpty()) return missing(shown, problem, line, true);
+        if (unit != nullptr) *unit = unitLatex(QString::fromUtf8(findQuantity(id)->unit));
+        return out;
+    }
     const TraceEntry* entry = nullptr;
     if (p.prefix == QLatin1String("pre")) {
         // The body's value when this contact started (after the integration and the
@@ -359,8 +388,16 @@ bool Expander::condition(const TemplateNode& n, const Context& ctx)
     const QString& cond = n.text;
     bool value = false;
     if (cond.startsWith(QLatin1String("convention="))) {
-        const bool courseTemplate = scene_.inertiaConvention == InertiaConvention::CourseTemplate;
+        // The context body's own convention (a body may override the scene's).
+        const int b = ctx.look.body;
+        const InertiaConvention convention = b >= 0 && b < static_cast<int>(scene_.bodies.size())
+                                                 ? scene_.conventionOf(b)
+                                                 : scene_.inertiaConvention;
+        const bool courseTemplate = convention == InertiaConvention::CourseTemplate;
         value = (cond.mid(11) == QLatin1String("course-template")) == courseTemplate;
+    } else if (cond.startsWith(QLatin1String("model="))) {
+        const bool manifold = scene_.contactModel == ContactModel::Manifold;
+        value = (cond.mid(6) == QLatin1String("manifold")) == manifold;
     } else if (cond == QLatin1String("plane")) {
         const int k = ctx.look.contact;
         value = k >= 0 && k < static_cast<int>(trace_.contacts.size()) && trace_.contacts[k].bodyB < 0;
@@ -439,6 +476,7 @@ QString Expander::node(const TemplateNode& n, const Context& ctx)
             quiet.swap(notes);
             if (!unit.isEmpty()) result += QStringLiteral("\\ ") + unit;
         }
+        rows.push_back(DerivationRow{where(n.line).chopped(2), formula, substituted, result});
         return rowHtml(rowLatex(formula, substituted, result), rowInlineLatex(formula, substituted, result));
     }
     case TemplateNode::Kind::Loop:
@@ -453,8 +491,57 @@ QString Expander::node(const TemplateNode& n, const Context& ctx)
     }
     case TemplateNode::Kind::If:
         return nodes(condition(n, ctx) ? n.children : n.elseChildren, ctx);
+    case TemplateNode::Kind::Integration:
+        return integration(n, ctx);
     }
     return QString();
+}
+
+// The integrator of the context's body, else the scene's if every body shares it;
+// empty when the bodies of a world-level context have different integrators.
+QString Expander::integratorOf(const Context& ctx) const
+{
+    if (ctx.look.body >= 0 && ctx.look.body < static_cast<int>(scene_.bodies.size())) {
+        return QString::fromStdString(scene_.integratorOf(ctx.look.body));
+    }
+    for (int b = 0; b < static_cast<int>(scene_.bodies.size()); ++b) {
+        if (scene_.integratorOf(b) != scene_.integrator) return QString();
+    }
+    return QString::fromStdString(scene_.integrator);
+}
+
+// @integration: the current body's integrator's own section (integrator_sections.h),
+// expanded here with the same context; its rows and notes name the section's file.
+QString Expander::integration(const TemplateNode& n, const Context& ctx)
+{
+    if (ctx.look.body < 0) {
+        const QString e = where(n.line) + QStringLiteral("@integration needs a body: use it inside @foreach body or @body");
+        if (!errors.contains(e)) errors << e;
+        return QString();
+    }
+    const bool moves = std::any_of(trace_.entries.begin(), trace_.entries.end(), [&](const TraceEntry& e) {
+        return e.body == ctx.look.body && e.info->stage == Stage::Integration;
+    });
+    if (!moves) {
+        return QStringLiteral("<p>%1 is not integrated in this step (a fixed body).</p>\n")
+            .arg(htmlEscape(bodyLabel(scene_, ctx.look.body)));
+    }
+    const QString name = integratorOf(ctx);
+    QString html;
+    for (const IntegratorSection* section : integratorSections(name)) {
+        if (!section->errors.isEmpty()) {
+            for (const QString& e : section->errors) {
+                if (!errors.contains(e)) errors << e;
+            }
+            continue;
+        }
+        Expander inner(trace_, scene_, section->label, digits_);
+        html += inner.nodes(section->nodes, ctx);
+        errors << inner.errors;
+        notes << inner.notes;
+        rows.insert(rows.end(), inner.rows.begin(), inner.rows.end());
+    }
+    return html;
 }
 
 QString Expander::nodes(const std::vector<TemplateNode>& list, const Context& ctx)
@@ -538,6 +625,7 @@ DerivationDocument templateDocument(const StepTrace& trace, const SceneDef& scen
     DerivationDocument doc;
     doc.errors = expander.errors;
     doc.notes = expander.notes;
+    doc.rows = std::move(expander.rows);
     QString body = doc.errors.isEmpty() ? QString() : errorBox(doc.errors);
     // The step line goes under the template's title (its first heading), if any.
     const int firstHeadingEnd = content.startsWith(QLatin1String("<h1>")) ? content.indexOf(QLatin1String("</h1>\n")) : -1;

@@ -16,6 +16,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <vector>
+
 namespace rbw {
 
 struct DerivationOptions {
@@ -27,11 +29,22 @@ struct DerivationOptions {
     int focusBody = -1;
 };
 
+// One filled-in derivation row, as LaTeX: where it comes from ("file:line" of the
+// template or of the integrator's section), the formula, the formula with the numbers
+// put in (empty for a two-cell row) and the result.
+struct DerivationRow {
+    QString where;
+    QString formula;
+    QString substituted;
+    QString result;
+};
+
 struct DerivationDocument {
     QString html;          // a complete document, starting with <!DOCTYPE html>
     QStringList errors;    // template errors, "file:line: message"
     QStringList notes;     // placeholders without a value here, "file:line: {{id}}: reason"
     bool fallback = false; // the generic derivation was used (no template, or a broken one)
+    std::vector<DerivationRow> rows;   // every row of a template page, in page order
 };
 
 // Fills a template (its text, and the label used in messages) from the trace.

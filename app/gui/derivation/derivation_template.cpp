@@ -72,6 +72,13 @@ QString checkCondition(const QString& cond)
         }
         return QString();
     }
+    if (cond.startsWith(QLatin1String("model="))) {
+        const QString v = cond.mid(6);
+        if (v != QLatin1String("course") && v != QLatin1String("manifold")) {
+            return QStringLiteral("unknown contact model '%1' (course or manifold)").arg(v);
+        }
+        return QString();
+    }
     if (cond == QLatin1String("plane") || cond == QLatin1String("particle") ||
         cond.startsWith(QLatin1String("particle@"))) {
         return QString();
@@ -92,9 +99,11 @@ struct OpenBlock {
 
 bool isMetaName(const QString& name)
 {
-    static const QStringList meta = {QStringLiteral("body"), QStringLiteral("i"), QStringLiteral("A"),
-                                     QStringLiteral("B"), QStringLiteral("feature"), QStringLiteral("resolution"),
-                                     QStringLiteral("step"), QStringLiteral("t")};
+    static const QStringList meta = {QStringLiteral("body"),       QStringLiteral("i"),
+                                     QStringLiteral("A"),          QStringLiteral("B"),
+                                     QStringLiteral("feature"),    QStringLiteral("resolution"),
+                                     QStringLiteral("step"),       QStringLiteral("t"),
+                                     QStringLiteral("integrator"), QStringLiteral("integrator_id")};
     return meta.contains(name);
 }
 
@@ -115,9 +124,10 @@ QString parsePlaceholder(const QString& inside, Placeholder* out)
     p.body = m.captured(4);
     p.selector = m.captured(5);
     static const QStringList prefixes = {QString(), QStringLiteral("symbol"), QStringLiteral("formula"),
-                                         QStringLiteral("unit"), QStringLiteral("scene"), QStringLiteral("pre")};
+                                         QStringLiteral("unit"), QStringLiteral("scene"), QStringLiteral("pre"),
+                                         QStringLiteral("start")};
     if (!prefixes.contains(p.prefix)) {
-        return QStringLiteral("unknown prefix '%1:' in {{%2}} (symbol, formula, unit, scene or pre)")
+        return QStringLiteral("unknown prefix '%1:' in {{%2}} (symbol, formula, unit, scene, pre or start)")
             .arg(p.prefix, inside);
     }
     if (!p.selector.isEmpty() && p.selector != QLatin1String("x") && p.selector != QLatin1String("y") &&
@@ -131,6 +141,13 @@ QString parsePlaceholder(const QString& inside, Placeholder* out)
     } else if (p.prefix == QLatin1String("pre")) {
         if (!preIds().contains(p.name)) {
             return QStringLiteral("{{pre:...}} works for linear_velocity, angular_velocity and angular_momentum, not '%1'")
+                .arg(p.name);
+        }
+    } else if (p.prefix == QLatin1String("start")) {
+        if (!hasStartValue(p.name.toStdString())) {
+            return QStringLiteral("{{start:...}} works for the state quantities position, linear_velocity, orientation, "
+                                  "angular_momentum, rotation_matrix, inverse_inertia_world, angular_velocity, "
+                                  "probe_position and point_velocity, not '%1'")
                 .arg(p.name);
         }
     } else if (p.prefix.isEmpty() && isMetaName(p.name)) {
@@ -214,6 +231,12 @@ TemplateParseResult parseDerivationTemplate(const QString& text, const QString& 
                 n.text = arg;
                 n.negate = word == QLatin1String("@ifnot");
                 stack.push_back(OpenBlock{n, false});
+            } else if (word == QLatin1String("@integration")) {
+                if (!arg.isEmpty()) result.errors << where + QStringLiteral("@integration takes no argument");
+                TemplateNode n;
+                n.kind = TemplateNode::Kind::Integration;
+                n.line = lineNo;
+                target().push_back(std::move(n));
             } else if (word == QLatin1String("@else")) {
                 if (stack.empty() || stack.back().node.kind == TemplateNode::Kind::Body) {
                     result.errors << where + QStringLiteral("@else outside an @if or @foreach block");
@@ -232,7 +255,7 @@ TemplateParseResult parseDerivationTemplate(const QString& text, const QString& 
                     target().push_back(std::move(done));
                 }
             } else {
-                result.errors << where + QStringLiteral("unknown directive '%1' (@foreach, @body, @if, @ifnot, @else, @end)").arg(word);
+                result.errors << where + QStringLiteral("unknown directive '%1' (@foreach, @body, @if, @ifnot, @else, @end, @integration)").arg(word);
             }
             continue;
         }

@@ -6,6 +6,8 @@
 //   $$ latex $$                   display math on one line
 //   @foreach body|force|torque|probe|contact|correction ... [@else ...] @end
 //   @body NAME ... @end           @if COND ... [@else ...] @end   (@ifnot COND)
+//   @integration                  the current body's integrator's own section
+//                                 (integrator_sections.h), expanded in place
 //   <!-- comment -->              on one line, ignored
 //
 // Placeholders {{...}} inside any text are checked here (syntax, known ids) and
@@ -22,7 +24,7 @@ namespace rbw {
 
 // One parsed {{...}}: [prefix:]name[[index]][@body][.selector]
 struct Placeholder {
-    QString prefix;     // "", "symbol", "formula", "unit", "scene", "pre"
+    QString prefix;     // "", "symbol", "formula", "unit", "scene", "pre", "start"
     QString name;       // trace id, scene key or meta name
     int index = -1;     // [i]
     QString body;       // @name (also @A / @B in a contact loop)
@@ -30,7 +32,7 @@ struct Placeholder {
 };
 
 struct TemplateNode {
-    enum class Kind { Heading, Paragraph, List, DisplayMath, Row, Loop, Body, If };
+    enum class Kind { Heading, Paragraph, List, DisplayMath, Row, Loop, Body, If, Integration };
     Kind kind = Kind::Paragraph;
     int line = 0;          // 1-based line in the template file
     int level = 0;         // heading level 1-3
@@ -59,9 +61,11 @@ TemplateParseResult parseDerivationTemplate(const QString& text, const QString& 
 QString parsePlaceholder(const QString& inside, Placeholder* out);
 
 // Meta placeholders (text about the step, not trace values): body, i, A, B, feature,
-// resolution, step, t.
+// resolution, step, t, integrator (its title, e.g. "classical Runge-Kutta (RK4)": the
+// current body's, else the scene's) and integrator_id (its name, e.g. "rk4").
 // Conditions of @if / @ifnot: a quantity (present in the trace here), particle[@body]
-// (angular response off), plane (contact B is a plane), convention=standard|course-template.
+// (angular response off), plane (contact B is a plane), convention=standard|course-template,
+// model=course|manifold (the scene's contact model).
 bool isMetaName(const QString& name);
 
 } // namespace rbw

@@ -1,10 +1,11 @@
 #include "app/gui/derivation/derivation_view.h"
 
+#include "app/core/atomic_file.h"
+
 #include "app/gui/derivation/derivation_page.h"
 #include "app/gui/derivation/standalone_html.h"
 
 #include <QPointer>
-#include <QSaveFile>
 #include <QTimer>
 #include <QUrl>
 #include <QVariantMap>
@@ -97,17 +98,7 @@ bool DerivationView::exportHtml(const QString& path, QString* error)
     }
     const QString html = standaloneDerivationHtml(renderedBody_, title_, QUrl(katexUrl_).toLocalFile(), error);
     if (html.isEmpty()) return false;
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        if (error != nullptr) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    file.write(html.toUtf8());
-    if (!file.commit()) {
-        if (error != nullptr) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return writeFileAtomically(path, html.toUtf8(), error);
 }
 
 void DerivationView::exportPdf(const QString& path)
@@ -129,12 +120,7 @@ bool DerivationView::writePdf(const QString& path, const QByteArray& pdf, QStrin
         if (error != nullptr) *error = QStringLiteral("cannot write %1: printing the page failed").arg(path);
         return false;
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(pdf) != pdf.size() || !file.commit()) {
-        if (error != nullptr) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return writeFileAtomically(path, pdf, error);
 }
 
 } // namespace rbw

@@ -1,5 +1,8 @@
 #include "app/gui/plots/body_plot_panel.h"
 
+#include "app/gui/body_colours.h"
+#include "app/gui/plots/axis_fit.h"
+
 #include "app/gui/plots/plot_axis_range.h"
 
 #include <QChart>
@@ -46,8 +49,11 @@ BodyPlotPanel::BodyPlotPanel(QWidget* parent) : QWidget(parent)
         c.x->setTitleText("t [s]");
         c.y = new QValueAxis(c.chart);
         c.y->setTitleText(QString::fromUtf8(kAxisTitles[q]));
+        keepLabelsWhole(c.x);
+        keepLabelsWhole(c.y);
         c.chart->addAxis(c.x, Qt::AlignBottom);
         c.chart->addAxis(c.y, Qt::AlignLeft);
+        connect(c.chart, &QChart::plotAreaChanged, this, &BodyPlotPanel::scheduleRefresh);
         c.view = new QChartView(c.chart);
         c.view->setRenderHint(QPainter::Antialiasing);
         tabs_->addTab(c.view, QString::fromUtf8(kTitles[q]));
@@ -62,9 +68,10 @@ BodyPlotPanel::BodyPlotPanel(QWidget* parent) : QWidget(parent)
     connect(tabs_, &QTabWidget::currentChanged, this, &BodyPlotPanel::scheduleRefresh);
 }
 
-void BodyPlotPanel::setBodies(const QStringList& names)
+void BodyPlotPanel::setBodies(const QStringList& names, const QList<bool>& fixed)
 {
     names_ = names;
+    fixed_ = fixed;
     t_.clear();
     for (auto& perBody : values_) perBody.assign(names.size(), {});
     rebuildLines();
@@ -76,9 +83,12 @@ void BodyPlotPanel::rebuildLines()
         Chart& c = charts_[q];
         c.chart->removeAllSeries();
         c.lines.clear();
-        for (const QString& name : names_) {
+        for (int b = 0; b < names_.size(); ++b) {
             auto* line = new QLineSeries();
-            line->setName(name);
+            line->setName(names_[b]);
+            QPen pen(lineColour(b));
+            pen.setWidthF(1.8);
+            line->setPen(pen);
             c.chart->addSeries(line);
             line->attachAxis(c.x);
             line->attachAxis(c.y);
@@ -86,6 +96,11 @@ void BodyPlotPanel::rebuildLines()
         }
     }
     refreshNow();
+}
+
+QColor BodyPlotPanel::lineColour(int body) const
+{
+    return bodyQColor(body, body >= 0 && body < fixed_.size() && fixed_[body], names_.value(body));
 }
 
 bool BodyPlotPanel::appendStep(double t, const Diagnostics& d)
@@ -149,8 +164,11 @@ void BodyPlotPanel::refreshNow()
         c.lines[b]->replace(shown);
     }
     const ValueRange xr = timeAxisRange(n > 0 ? t_.back() : 1.0);
+    const QRectF area = c.chart->plotArea();
+    c.x->setTickCount(fittingTickCount(area.width(), c.x->labelsFont(), 5, false));
     c.x->setRange(xr.min, xr.max);
     const ValueRange yr = n > 0 ? valueAxisRange(lo, hi) : valueAxisRange(0.0, 0.0);
+    c.y->setTickCount(fittingTickCount(area.height(), c.y->labelsFont(), 5, true));
     c.y->setRange(yr.min, yr.max);
 }
 

@@ -11,6 +11,7 @@
 
 #include "physics/diagnostics.h"
 
+#include <QColor>
 #include <QList>
 #include <QPointF>
 #include <QStringList>
@@ -36,8 +37,11 @@ public:
 
     explicit BodyPlotPanel(QWidget* parent = nullptr);
 
-    // A new scene: one line per body, named; drops every sample.
-    void setBodies(const QStringList& names);
+    // A new scene: one line per body, named, in the body's colour (body_colours.h;
+    // grey for a fixed body); drops every sample.
+    void setBodies(const QStringList& names, const QList<bool>& fixed = {});
+    // The colour of body b's line.
+    QColor lineColour(int body) const;
     // One sample per step; false (nothing stored) if the sample does not have one
     // entry per body or holds a non-finite number.
     bool appendStep(double t, const Diagnostics& d);
@@ -62,6 +66,7 @@ private:
     void scheduleRefresh();
 
     QStringList names_;
+    QList<bool> fixed_;
     std::vector<double> t_;
     std::array<std::vector<std::vector<double>>, QuantityCount> values_;   // [q][body][sample]
     std::array<Chart, QuantityCount> charts_;

@@ -35,4 +35,16 @@ ValueRange valueAxisRange(double lo, double hi)
     return r;
 }
 
+QString axisLabelFormat(double min, double max, double step)
+{
+    const double magnitude = std::max(std::abs(min), std::abs(max));
+    if (!(step > 0.0) || !(magnitude > 0.0)) return QStringLiteral("%.1f");
+    if (magnitude >= 1e5 || magnitude < 1e-3) {
+        const int digits = std::clamp(static_cast<int>(std::ceil(std::log10(magnitude / step))), 1, 12);
+        return QStringLiteral("%.%1e").arg(digits);
+    }
+    const int decimals = std::clamp(static_cast<int>(-std::floor(std::log10(step) + 1e-9)), 0, 12);
+    return QStringLiteral("%.%1f").arg(decimals);
+}
+
 } // namespace rbw

@@ -9,6 +9,8 @@
 
 #include "app/gui/plots/plot_series.h"
 
+#include <QString>
+
 namespace rbw {
 
 inline constexpr double kValuePadFraction = 0.05;
@@ -21,5 +23,10 @@ ValueRange timeAxisRange(double tMax);
 
 // Range of a value axis showing data between lo and hi (lo <= hi, both finite).
 ValueRange valueAxisRange(double lo, double hi);
+
+// A printf format for the tick labels of [min, max] with ticks `step` apart: fixed
+// decimals for everyday magnitudes, exponent form for very large or small ones, and
+// always enough digits that neighbouring ticks read differently (every plot uses it).
+QString axisLabelFormat(double min, double max, double step);
 
 } // namespace rbw

@@ -1,5 +1,6 @@
 #include "app/gui/plots/plot_panel.h"
 
+#include "app/gui/plots/axis_fit.h"
 #include "app/gui/plots/plot_axis_range.h"
 #include "app/gui/plots/plot_decimation.h"
 
@@ -65,21 +66,6 @@ QIcon swatch(const QColor& colour)
     QPixmap pixmap(12, 12);
     pixmap.fill(colour);
     return QIcon(pixmap);
-}
-
-// A printf format for the tick labels of [min, max] with ticks `step` apart: fixed
-// decimals for everyday magnitudes, exponent form for very large or small ones, and
-// always enough digits that neighbouring ticks read differently.
-QString labelFormat(double min, double max, double step)
-{
-    const double magnitude = std::max(std::abs(min), std::abs(max));
-    if (!(step > 0.0) || !(magnitude > 0.0)) return QStringLiteral("%.1f");
-    if (magnitude >= 1e5 || magnitude < 1e-3) {
-        const int digits = std::clamp(static_cast<int>(std::ceil(std::log10(magnitude / step))), 1, 12);
-        return QStringLiteral("%.%1e").arg(digits);
-    }
-    const int decimals = std::clamp(static_cast<int>(-std::floor(std::log10(step) + 1e-9)), 0, 12);
-    return QStringLiteral("%.%1f").arg(decimals);
 }
 
 void setErrorText(QString* error, const QString& text)
@@ -161,8 +147,18 @@ QWidget* PlotPanel::buildChartPage(PlotChart which)
         axis->setLabelsFont(smallFont);
         axis->setTitleFont(smallFont);
         axis->setTickCount(kAxisTickCount);
+        keepLabelsWhole(axis);
     }
     parts.chart->addAxis(parts.xAxis, Qt::AlignBottom);
+    // A resized dock changes how many y ticks fit: re-fit the axes.
+    connect(parts.chart, &QChart::plotAreaChanged, this, [this, which](const QRectF& area) {
+        ChartParts& p = charts_[static_cast<std::size_t>(plotIndex(which))];
+        if (fittingTickCount(area.height(), p.yAxis->labelsFont(), kAxisTickCount, true) != p.yAxis->tickCount()) {
+            p.hasInput = false;
+            axesDirty_ = true;
+            scheduleRefresh();
+        }
+    });
     parts.chart->addAxis(parts.yAxis, Qt::AlignLeft);
 
     auto* page = new QWidget(tabs_);
@@ -412,16 +408,19 @@ void PlotPanel::updateAxes(PlotChart chart)
     // Keep the current (nice) range while it still holds the wanted one and the
     // wanted one has not shrunk to less than half of what the axis was made for;
     // otherwise re-fit. This spares a relayout on most refreshes.
-    auto apply = [](QValueAxis* axis, ValueRange& input, const ValueRange& wanted, bool force) {
+    const QRectF area = parts.chart->plotArea();
+    auto apply = [&area](QValueAxis* axis, ValueRange& input, const ValueRange& wanted, bool force) {
         const bool inside = wanted.min >= axis->min() && wanted.max <= axis->max();
         const bool shrunk = (wanted.max - wanted.min) < 0.5 * (input.max - input.min);
         if (!force && inside && !shrunk) return;
         input = wanted;
-        axis->setTickCount(kAxisTickCount);
+        const bool vertical = axis->orientation() == Qt::Vertical;
+        axis->setTickCount(fittingTickCount(vertical ? area.height() : area.width(), axis->labelsFont(),
+                                            kAxisTickCount, vertical));
         axis->setRange(wanted.min, wanted.max);
         axis->applyNiceNumbers();
         const double step = (axis->max() - axis->min()) / std::max(1, axis->tickCount() - 1);
-        axis->setLabelFormat(labelFormat(axis->min(), axis->max(), step));
+        axis->setLabelFormat(axisLabelFormat(axis->min(), axis->max(), step));
     };
     apply(parts.xAxis, parts.xInput, xWanted, !parts.hasInput);
     apply(parts.yAxis, parts.yInput, yWanted, !parts.hasInput);

@@ -76,7 +76,7 @@ FrameGeometry buildFrameGeometry(const ViewSnapshot& snap, const std::vector<std
     for (int b = 0; b < static_cast<int>(snap.bodies.size()); ++b) {
         const ViewSnapshot::Body& body = snap.bodies[b];
         if (!body.finite) continue;
-        Rgba colour = bodyColour(b, body.fixed);
+        Rgba colour = bodyColour(b, body.fixed, body.name);
         if (b == options.highlightBody) colour = lighter(colour, 0.35f);
         appendBox(g.lit, body.x_W, body.R_WB, body.size, colour);
         appendBoxEdges(g.lines, body.x_W, body.R_WB, body.size, kEdge);
@@ -90,22 +90,43 @@ FrameGeometry buildFrameGeometry(const ViewSnapshot& snap, const std::vector<std
     // Motion trails of the centres of mass.
     if (options.trails) {
         for (int b = 0; b < static_cast<int>(trails.size()) && b < static_cast<int>(snap.bodies.size()); ++b) {
-            const Rgba colour = lighter(bodyColour(b, snap.bodies[b].fixed), 0.25f);
+            const Rgba colour = lighter(bodyColour(b, snap.bodies[b].fixed, snap.bodies[b].name), 0.25f);
             for (size_t k = 1; k < trails[b].size(); ++k) appendLine(g.lines, trails[b][k - 1], trails[b][k], colour);
         }
     }
 
     const double shaft = 0.022 * ref;
+    // Arrows drawn translucent go last, so what lies inside them is already drawn.
+    std::vector<LitVertex> translucent;
+    auto arrow = [&](std::vector<LitVertex>& out, ArrowKind kind, int body, int index, const Vec3& from,
+                     const Vec3& to, const Vec3& value, double radius, Rgba colour) {
+        if (!isFinite(from) || !isFinite(to) || (to - from).norm() <= 0.0) return;
+        appendArrow(out, from, to - from, radius, colour);
+        g.arrows.push_back(ArrowRecord{kind, body, index, from, to, value});
+    };
 
-    // Forces: f_i from p_i, and M g from x; one scale for both (they share the unit N).
+    // Forces: f_i from p_i, and M g ending at x; one scale for both (they share the
+    // unit N). Gravity ends at x so that it never lies on the contact arrows below a
+    // body; a force of the step just taken that does not act again is faded.
     for (const ViewSnapshot::Force& f : snap.forces) {
         s.maxForce = std::max(s.maxForce, f.f_W.norm());
-        (f.kind == ViewSnapshot::ForceKind::Gravity ? s.hasGravity : s.hasApplied) = true;
+        if (f.kind == ViewSnapshot::ForceKind::Gravity) {
+            s.hasGravity = true;
+        } else {
+            (f.upcoming ? s.hasApplied : s.hasAppliedDone) = true;
+        }
     }
     const double forceScale = arrowScale(s.maxForce, ref);
     for (const ViewSnapshot::Force& f : snap.forces) {
-        appendArrow(g.overlay, f.origin_W, forceScale * f.f_W, shaft,
-                    f.kind == ViewSnapshot::ForceKind::Gravity ? kGravity : kForce);
+        const Vec3 d = forceScale * f.f_W;
+        if (f.kind == ViewSnapshot::ForceKind::Gravity) {
+            arrow(g.overlay, ArrowKind::Gravity, f.body, f.index, f.origin_W - d, f.origin_W, f.f_W, shaft, kGravity);
+        } else if (f.upcoming) {
+            arrow(g.overlay, ArrowKind::Force, f.body, f.index, f.origin_W, f.origin_W + d, f.f_W, shaft, kForce);
+        } else {
+            arrow(translucent, ArrowKind::ForceDone, f.body, f.index, f.origin_W, f.origin_W + d, f.f_W, shaft,
+                  kForceDone);
+        }
     }
 
     // Probes: the point and its velocity v_p.
@@ -116,21 +137,64 @@ FrameGeometry buildFrameGeometry(const ViewSnapshot& snap, const std::vector<std
     const double velocityScale = arrowScale(s.maxVelocity, ref);
     for (const ViewSnapshot::Probe& p : snap.probes) {
         appendBall(g.overlay, p.p_W, 0.05 * ref, kProbe);
-        appendArrow(g.overlay, p.p_W, velocityScale * p.v_W, shaft, kProbe);
+        arrow(g.overlay, ArrowKind::ProbeVelocity, p.body, p.index, p.p_W, p.p_W + velocityScale * p.v_W, p.v_W, shaft,
+              kProbe);
     }
 
-    // Contacts: the point, the unit normal n (drawn at half the reference length)
-    // and the impulse J n on A.
+    // Contacts: the point; the unit normal n from p into A (half the reference
+    // length, thin); the impulses on A ending at p, so they lie on the other side
+    // of p and never on the normal: J n, the friction impulse J_t t and their sum.
     for (const ViewSnapshot::Contact& c : snap.contacts) {
-        s.maxImpulse = std::max(s.maxImpulse, c.impulse_W.norm());
+        s.maxImpulse = std::max({s.maxImpulse, c.impulse_W.norm(), c.friction_W.norm(), c.total_W.norm()});
         s.hasContacts = true;
+        s.hasFriction = s.hasFriction || c.friction_W.norm() > 0.0;
     }
     const double impulseScale = arrowScale(s.maxImpulse, ref);
     for (const ViewSnapshot::Contact& c : snap.contacts) {
         appendBall(g.overlay, c.p_W, 0.055 * ref, kContact);
-        appendArrow(g.overlay, c.p_W, 0.5 * ref * c.n_W.normalized(), 0.8 * shaft, kContact);
-        appendArrow(g.overlay, c.p_W, impulseScale * c.impulse_W, 1.2 * shaft, kImpulse);
+        const Vec3 n = c.n_W.normalized();
+        arrow(g.overlay, ArrowKind::Normal, c.bodyA, c.index, c.p_W, c.p_W + 0.5 * ref * n, n, 0.6 * shaft, kContact);
+        arrow(g.overlay, ArrowKind::NormalImpulse, c.bodyA, c.index, c.p_W - impulseScale * c.impulse_W, c.p_W,
+              c.impulse_W, 1.1 * shaft, kImpulse);
+        if (c.friction_W.norm() > 0.0) {
+            arrow(g.overlay, ArrowKind::FrictionImpulse, c.bodyA, c.index, c.p_W - impulseScale * c.friction_W, c.p_W,
+                  c.friction_W, 0.9 * shaft, kFriction);
+            arrow(translucent, ArrowKind::TotalImpulse, c.bodyA, c.index, c.p_W - impulseScale * c.total_W, c.p_W,
+                  c.total_W, 1.6 * shaft, kTotalImpulse);
+        }
     }
+
+    // The state: v, ω and L at each movable body's centre, each kind with its own scale.
+    auto shown = [](const Vec3& v) { return v.norm() > kNegligibleMagnitude; };
+    for (const ViewSnapshot::Body& body : snap.bodies) {
+        if (!body.finite || body.fixed) continue;
+        if (shown(body.v_W)) s.maxBodyVelocity = std::max(s.maxBodyVelocity, body.v_W.norm());
+        if (shown(body.omega_W)) s.maxOmega = std::max(s.maxOmega, body.omega_W.norm());
+        if (shown(body.L_W)) s.maxL = std::max(s.maxL, body.L_W.norm());
+    }
+    const double vScale = arrowScale(s.maxBodyVelocity, ref);
+    const double omegaScale = arrowScale(s.maxOmega, ref);
+    const double lScale = arrowScale(s.maxL, ref);
+    for (int b = 0; b < static_cast<int>(snap.bodies.size()); ++b) {
+        const ViewSnapshot::Body& body = snap.bodies[b];
+        if (!body.finite || body.fixed) continue;
+        if (options.velocity && shown(body.v_W)) {
+            s.hasVelocity = true;
+            arrow(g.overlay, ArrowKind::Velocity, b, -1, body.x_W, body.x_W + vScale * body.v_W, body.v_W, shaft,
+                  kVelocity);
+        }
+        if (options.angularVelocity && shown(body.omega_W)) {
+            s.hasOmega = true;
+            arrow(g.overlay, ArrowKind::AngularVelocity, b, -1, body.x_W, body.x_W + omegaScale * body.omega_W,
+                  body.omega_W, 0.8 * shaft, kOmega);
+        }
+        if (options.angularMomentum && shown(body.L_W)) {
+            s.hasL = true;
+            arrow(translucent, ArrowKind::AngularMomentum, b, -1, body.x_W, body.x_W + lScale * body.L_W, body.L_W,
+                  1.9 * shaft, kAngularMomentum);
+        }
+    }
+    g.overlay.insert(g.overlay.end(), translucent.begin(), translucent.end());
 
     // The drag spring: a line from the picked point to the target, with both ends marked.
     if (snap.spring) {

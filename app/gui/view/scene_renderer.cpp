@@ -233,12 +233,12 @@ void SceneRenderer::draw(const FrameGeometry& geometry, const Eigen::Matrix4d& P
         if (overlayBytes > 0) lit_.vbo.write(static_cast<int>(boxBytes), geometry.overlay.data(), static_cast<int>(overlayBytes));
         glDrawArrays(GL_TRIANGLES, 0, boxCount + overlayCount);
         // X-ray: the parts of arrows and markers hidden inside or behind boxes (a contact
-        // point lies inside both boxes) are drawn again, faintly, where they failed the
-        // depth test.
+        // point lies inside both boxes) are drawn again at 60 % where they failed the
+        // depth test, so no arrow is ever hidden by a body, yet one can tell it is inside.
         if (overlayCount > 0) {
             glDepthFunc(GL_GREATER);
             glDepthMask(GL_FALSE);
-            lit_.program->setUniformValue("u_alpha", 0.35f);
+            lit_.program->setUniformValue("u_alpha", 0.6f);
             glDrawArrays(GL_TRIANGLES, boxCount, overlayCount);
             glDepthFunc(GL_LEQUAL);
             glDepthMask(GL_TRUE);

@@ -120,13 +120,9 @@ void SceneView::paintGL()
         paintGlError(painter);
         return;
     }
-    view::FrameOptions options;
-    options.eye_W = camera_.eye();
-    options.sceneBox = sceneBox_;
-    options.trails = trailsVisible_;
-    options.highlightBody = drag_ == DragMode::Grab ? grabBody_ : -1;
-    const view::FrameGeometry geometry = buildFrameGeometry(snapshot_, trails_, options);
+    const view::FrameGeometry geometry = buildFrameGeometry(snapshot_, trails_, frameOptions());
     scales_ = geometry.scales;
+    arrows_ = geometry.arrows;
 
     // clip = P V p
     const Eigen::Matrix4d PV = camera_.projectionMatrix(aspect()) * camera_.viewMatrix();
@@ -135,6 +131,87 @@ void SceneView::paintGL()
     painter.begin(this);
     painter.setRenderHint(QPainter::Antialiasing);
     paintLegend(painter);
+    paintInfo(painter);
+}
+
+view::FrameOptions SceneView::frameOptions() const
+{
+    view::FrameOptions options;
+    options.eye_W = camera_.eye();
+    options.sceneBox = sceneBox_;
+    options.trails = trailsVisible_;
+    options.highlightBody = drag_ == DragMode::Grab ? grabBody_ : -1;
+    options.velocity = showVelocity_;
+    options.angularVelocity = showOmega_;
+    options.angularMomentum = showL_;
+    return options;
+}
+
+std::vector<view::ArrowRecord> SceneView::currentArrows() const
+{
+    return buildFrameGeometry(snapshot_, trails_, frameOptions()).arrows;
+}
+
+void SceneView::setShowVelocity(bool on)
+{
+    showVelocity_ = on;
+    update();
+}
+
+void SceneView::setShowAngularVelocity(bool on)
+{
+    showOmega_ = on;
+    update();
+}
+
+void SceneView::setShowAngularMomentum(bool on)
+{
+    showL_ = on;
+    update();
+}
+
+void SceneView::setFollowBody(int body)
+{
+    followBody_ = (body >= 0 && body < static_cast<int>(snapshot_.bodies.size())) ? body : -1;
+    follow();
+    update();
+}
+
+void SceneView::follow()
+{
+    if (followBody_ < 0 || followBody_ >= static_cast<int>(snapshot_.bodies.size())) return;
+    const ViewSnapshot::Body& b = snapshot_.bodies[static_cast<size_t>(followBody_)];
+    if (b.finite) camera_.setTarget(b.x_W);
+}
+
+QString SceneView::infoText() const
+{
+    QString text = tr("step %1 · t = %2 s · h = %3 s · %4")
+                       .arg(snapshot_.nextStep)
+                       .arg(snapshot_.time, 0, 'g', 6)
+                       .arg(snapshot_.h, 0, 'g', 6)
+                       .arg(QString::fromStdString(snapshot_.integrator));
+    if (snapshot_.energyFinite) text += tr(" · E = %1 J").arg(snapshot_.energy, 0, 'g', 7);
+    if (followBody_ >= 0 && followBody_ < static_cast<int>(snapshot_.bodies.size())) {
+        text += tr(" · following %1").arg(QString::fromStdString(snapshot_.bodies[static_cast<size_t>(followBody_)].name));
+    }
+    return text;
+}
+
+void SceneView::paintInfo(QPainter& painter) const
+{
+    if (!hasSnapshot_) return;
+    QFont font = painter.font();
+    font.setPointSizeF(9.0);
+    painter.setFont(font);
+    const QFontMetrics fm(font);
+    const QString text = infoText();
+    const QRect box(8, 8, fm.horizontalAdvance(text) + 16, fm.height() + 10);
+    painter.setPen(QColor(0, 0, 0, 40));
+    painter.setBrush(QColor(255, 255, 255, 215));
+    painter.drawRoundedRect(box, 6, 6);
+    painter.setPen(QColor(30, 30, 35));
+    painter.drawText(box, Qt::AlignCenter, text);
 }
 
 void SceneView::paintGlError(QPainter& painter) const
@@ -153,15 +230,25 @@ void SceneView::paintLegend(QPainter& painter) const
     };
     std::vector<Row> rows;
     const QString box = tr("1 box = %1").arg(magnitude(s.refLength, "m"));
-    if (s.hasApplied) rows.push_back({view::kForce, tr("force fᵢ at pᵢ")});
-    if (s.hasGravity) rows.push_back({view::kGravity, tr("gravity M·g at x")});
-    if (s.hasApplied || s.hasGravity) rows.back().text += tr("  (longest %1)").arg(magnitude(s.maxForce, "N"));
+    if (s.hasApplied) rows.push_back({view::kForce, tr("force fᵢ at pᵢ, acts in step %1").arg(snapshot_.nextStep)});
+    if (s.hasAppliedDone) rows.push_back({view::kForceDone, tr("force fᵢ of the step just taken (faded)")});
+    if (s.hasGravity) rows.push_back({view::kGravity, tr("gravity M·g, ending at x")});
+    if (s.hasApplied || s.hasAppliedDone || s.hasGravity) {
+        rows.back().text += tr("  (longest %1)").arg(magnitude(s.maxForce, "N"));
+    }
     if (s.hasProbes) rows.push_back({view::kProbe, tr("probe p, velocity v_p  (longest %1)").arg(magnitude(s.maxVelocity, "m/s"))});
     if (s.hasContacts) {
-        rows.push_back({view::kContact, tr("contact p, normal n  (unit, ½ box)")});
-        rows.push_back({view::kImpulse, s.maxImpulse > 0.0 ? tr("impulse J·n on A  (longest %1)").arg(magnitude(s.maxImpulse, "N·s"))
+        rows.push_back({view::kContact, tr("contact p, normal n into A  (unit, ½ box)")});
+        rows.push_back({view::kImpulse, s.maxImpulse > 0.0 ? tr("impulse J·n on A, ending at p  (longest %1)").arg(magnitude(s.maxImpulse, "N·s"))
                                                             : tr("impulse J·n on A  (none: separating)")});
+        if (s.hasFriction) {
+            rows.push_back({view::kFriction, tr("friction impulse Jₜ·t on A, ending at p")});
+            rows.push_back({view::kTotalImpulse, tr("total impulse J·n + Jₜ·t on A")});
+        }
     }
+    if (s.hasVelocity) rows.push_back({view::kVelocity, tr("velocity v at x  (longest %1)").arg(magnitude(s.maxBodyVelocity, "m/s"))});
+    if (s.hasOmega) rows.push_back({view::kOmega, tr("angular velocity ω at x  (longest %1)").arg(magnitude(s.maxOmega, "rad/s"))});
+    if (s.hasL) rows.push_back({view::kAngularMomentum, tr("angular momentum L at x  (longest %1)").arg(magnitude(s.maxL, "N·m·s"))});
     if (s.hasSpring) rows.push_back({view::kSpring, tr("drag spring")});
 
     QFont font = painter.font();
@@ -252,6 +339,7 @@ void SceneView::setSnapshot(const ViewSnapshot& snapshot)
     snapshot_ = snapshot;
     hasSnapshot_ = true;
     if (newScene) {
+        followBody_ = -1;
         sceneBox_ = view::Bounds{};
         clearTrails();
         resetView();
@@ -259,6 +347,7 @@ void SceneView::setSnapshot(const ViewSnapshot& snapshot)
         clearTrails();
     }
     updateSceneBox();
+    follow();
 
     // Trails: append each centre of mass when it moved visibly.
     trails_.resize(snapshot_.bodies.size());

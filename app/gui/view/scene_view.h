@@ -74,8 +74,28 @@ public:
     bool isGlReady() const { return glReady_; }
     QString glError() const { return glError_; }   // why nothing is drawn, empty if fine
 
-    // What the arrows of the last frame are scaled to (see frame_geometry.h).
+    // What the arrows of the last frame are scaled to (see frame_geometry.h), and the
+    // arrows themselves (what each shows, from where to where).
     const view::ArrowScales& arrowScales() const { return scales_; }
+    const std::vector<view::ArrowRecord>& arrows() const { return arrows_; }
+    // The same arrows as the next frame draws them, without drawing (tests, no GL needed).
+    std::vector<view::ArrowRecord> currentArrows() const;
+
+    // The state arrows at each body's centre: v, ω and L (View menu).
+    void setShowVelocity(bool on);
+    void setShowAngularVelocity(bool on);
+    void setShowAngularMomentum(bool on);
+    bool showsVelocity() const { return showVelocity_; }
+    bool showsAngularVelocity() const { return showOmega_; }
+    bool showsAngularMomentum() const { return showL_; }
+
+    // The camera follows body b (its centre stays the orbit target as it moves); -1
+    // stops following. A body that is not finite is not followed.
+    void setFollowBody(int body);
+    int followBody() const { return followBody_; }
+
+    // The info overlay (top left): step, t, h, the integrator and the energy E.
+    QString infoText() const;
 
     QSize sizeHint() const override { return {640, 480}; }
     QSize minimumSizeHint() const override { return {160, 120}; }
@@ -100,6 +120,9 @@ private:
     double aspect() const;
     void releaseGl();
     void paintLegend(QPainter& painter) const;
+    void paintInfo(QPainter& painter) const;
+    view::FrameOptions frameOptions() const;
+    void follow();
     void paintGlError(QPainter& painter) const;
     bool sameScene(const ViewSnapshot& other) const;
     void updateSceneBox();
@@ -119,6 +142,11 @@ private:
 
     view::SceneRenderer renderer_;
     view::ArrowScales scales_;
+    std::vector<view::ArrowRecord> arrows_;
+    bool showVelocity_ = false;
+    bool showOmega_ = false;
+    bool showL_ = false;
+    int followBody_ = -1;
     bool glReady_ = false;
     QString glError_;
     QString glVersion_;

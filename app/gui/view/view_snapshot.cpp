@@ -47,6 +47,7 @@ struct PendingContact {
     std::optional<Vec3> p_W;
     std::optional<Vec3> n_W;
     double J = 0.0;
+    std::optional<Vec3> friction_W;
 };
 
 } // namespace
@@ -59,6 +60,11 @@ ViewSnapshot makeViewSnapshot(const World& world, const StepTrace* trace)
     const int bodyCount = static_cast<int>(states.size());
 
     snap.time = world.time();
+    snap.nextStep = world.stepIndex();
+    snap.h = scene.dt;
+    bool perBody = false;
+    for (const BodyDef& b : scene.bodies) perBody = perBody || !b.integrator.empty();
+    snap.integrator = perBody ? std::string("per body") : scene.integrator;
     snap.bodies.reserve(states.size());
     for (int b = 0; b < bodyCount; ++b) {
         ViewSnapshot::Body body;
@@ -68,6 +74,9 @@ ViewSnapshot makeViewSnapshot(const World& world, const StepTrace* trace)
         body.size = scene.bodies[b].size;
         body.fixed = scene.bodies[b].fixed;
         body.finite = isFinite(body.x_W) && isFinite(body.R_WB);
+        body.v_W = isFinite(states[b].v_W) ? states[b].v_W : Vec3::Zero();
+        body.omega_W = isFinite(states[b].omega_W) ? states[b].omega_W : Vec3::Zero();
+        body.L_W = isFinite(states[b].L_W) ? states[b].L_W : Vec3::Zero();
         snap.bodies.push_back(body);
     }
     for (const PlaneDef& p : scene.planes) {
@@ -102,8 +111,9 @@ ViewSnapshot makeViewSnapshot(const World& world, const StepTrace* trace)
                     // M g acts at the centre of mass x (no torque).
                     const Vec3* v = vec3Of(e);
                     if (v == nullptr || !snap.bodies[e.body].finite) break;
+                    // Gravity acts in every step: it is also the next step's.
                     gravity.push_back(ViewSnapshot::Force{ViewSnapshot::ForceKind::Gravity, e.body, -1,
-                                                          snap.bodies[e.body].x_W, *v});
+                                                          snap.bodies[e.body].x_W, *v, true});
                 }
                 break;
             case Stage::Collision:
@@ -114,6 +124,8 @@ ViewSnapshot makeViewSnapshot(const World& world, const StepTrace* trace)
                     if (const Vec3* v = vec3Of(e)) contacts[e.index].n_W = *v;
                 } else if (is(e, q::impulse)) {
                     if (const double* d = scalarOf(e)) contacts[e.index].J = *d;
+                } else if (is(e, q::friction_impulse)) {
+                    if (const Vec3* v = vec3Of(e)) contacts[e.index].friction_W = *v;
                 }
                 break;
             case Stage::Probes:
@@ -138,8 +150,15 @@ ViewSnapshot makeViewSnapshot(const World& world, const StepTrace* trace)
             }
         }
 
+        // The forces of the step just taken, unless they act again in the next one (then
+        // they are drawn once, as upcoming, below).
         for (const PendingForce& pf : pendingForces) {
             if (pf.f_W && pf.p_W) {
+                bool again = false;
+                for (const ForceDef& f : scene.forces) {
+                    again = again || (f.body == pf.body && f.activeIn(snap.nextStep) && f.p_W == *pf.p_W && f.f_W == *pf.f_W);
+                }
+                if (again) continue;
                 snap.forces.push_back(
                     ViewSnapshot::Force{ViewSnapshot::ForceKind::Applied, pf.body, pf.index, *pf.p_W, *pf.f_W});
             }
@@ -161,9 +180,31 @@ ViewSnapshot makeViewSnapshot(const World& world, const StepTrace* trace)
             c.J = h.separating ? 0.0 : pc.J;
             // The impulse on A along the normal: J n (docs/references.md §3).
             c.impulse_W = c.J * c.n_W;
+            c.hasFriction = pc.friction_W.has_value();
+            c.friction_W = (pc.friction_W && !h.separating) ? *pc.friction_W : Vec3::Zero();
+            // What the physics applies to A (impulse.cpp: applyImpulse(J n), then applyImpulse(J_t t)).
+            c.total_W = c.impulse_W + c.friction_W;
             snap.contacts.push_back(c);
         }
     }
+
+    // The forces that act in the next step, as the scene defines them (f_i at p_i).
+    {
+        std::vector<ViewSnapshot::Force> upcoming;
+        for (int i = 0; i < static_cast<int>(scene.forces.size()); ++i) {
+            const ForceDef& f = scene.forces[static_cast<size_t>(i)];
+            if (!f.activeIn(snap.nextStep) || f.body < 0 || f.body >= bodyCount) continue;
+            if (!isFinite(f.p_W) || !isFinite(f.f_W)) continue;
+            ViewSnapshot::Force force{ViewSnapshot::ForceKind::Applied, f.body, i, f.p_W, f.f_W};
+            force.upcoming = true;
+            upcoming.push_back(force);
+        }
+        snap.forces.insert(snap.forces.begin(), upcoming.begin(), upcoming.end());
+    }
+    // E: the trace's diagnostics after the step, or the world's before the first step.
+    const double E = trace != nullptr ? trace->diagnostics.total : world.diagnostics().total;
+    snap.energyFinite = std::isfinite(E);
+    snap.energy = snap.energyFinite ? E : 0.0;
 
     if (probesFromTrace) {
         for (int i = 0; i < probeCount; ++i) {

@@ -14,6 +14,15 @@
 //   v_W      velocity of a probe point (trace `point_velocity`)         [m/s]
 //   n_W      contact normal, unit, from B to A (trace `normal`)         [-]
 //   J        normal impulse magnitude (trace `impulse`)                  [N s]
+//   Jt_W     friction impulse J_t t on A (trace `friction_impulse`)      [N s]
+//   P_W      total impulse applied to A: J n + J_t t (the two trace rows
+//            side by side; the physics applies exactly these two)      [N s]
+//   v, ω, L  each body's state after the step (World::states())     [m/s, rad/s, N m s]
+//
+// Forces are drawn at the step they act in: before step k the scene's forces active
+// in step k (their f_i and p_i as defined, ForceDef::activeIn) are "upcoming"; the
+// forces of the step just taken come from its trace and are drawn faded when they do
+// not act again.
 #pragma once
 
 #include "physics/math_types.h"
@@ -35,6 +44,9 @@ struct ViewSnapshot {
         Vec3 size = Vec3::Ones();
         bool fixed = false;
         bool finite = true;   // false after a blow-up: not drawn, not pickable
+        Vec3 v_W = Vec3::Zero();       // the state: linear velocity
+        Vec3 omega_W = Vec3::Zero();   // angular velocity
+        Vec3 L_W = Vec3::Zero();       // angular momentum about the centre of mass
     };
     // A fixed plane { p : n . (p - point) = 0 }, drawn as a large finite quad.
     struct Plane {
@@ -50,6 +62,7 @@ struct ViewSnapshot {
         int index = -1;            // the trace index i of f_i; -1 for gravity
         Vec3 origin_W = Vec3::Zero();   // p_i, or x for gravity
         Vec3 f_W = Vec3::Zero();
+        bool upcoming = false;     // acts in the next step (from the scene), else acted in the last
     };
     struct Probe {
         int body = -1;
@@ -66,7 +79,10 @@ struct ViewSnapshot {
         Vec3 p_W = Vec3::Zero();
         Vec3 n_W = Vec3::Zero();
         double J = 0.0;            // 0 when separating (no impulse applied)
-        Vec3 impulse_W = Vec3::Zero();   // J n, the impulse on A
+        Vec3 impulse_W = Vec3::Zero();   // J n, the normal impulse on A
+        Vec3 friction_W = Vec3::Zero();  // J_t t (trace friction_impulse; zero without friction)
+        Vec3 total_W = Vec3::Zero();     // J n + J_t t, the whole impulse applied to A
+        bool hasFriction = false;        // the trace has a friction_impulse row for it
         bool separating = false;
     };
     // The drag spring the app applies while the student pulls a body.
@@ -86,6 +102,11 @@ struct ViewSnapshot {
     bool hasTrace = false;
     long step = -1;                // the trace's step k (-1 without a trace)
     double time = 0.0;             // the world's time t
+    long nextStep = 0;             // the world's stepIndex(): the step Step takes next
+    double h = 0.0;                // the scene's dt
+    std::string integrator;        // the scene's integrator, or "per body"
+    double energy = 0.0;           // total energy E (the trace's diagnostics, else World::diagnostics())
+    bool energyFinite = false;
 };
 
 // Builds a snapshot from the world's public state and, if given, the trace of the

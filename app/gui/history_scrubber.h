@@ -1,0 +1,56 @@
+// The history scrubber: a slider over the recorded steps of the session (from the
+// oldest kept state to the newest recorded one) and "Go to step N". Moving the
+// slider shows the state and trace of that step exactly as they were recorded
+// (Session::goToStep restores them; nothing is recomputed). A step beyond the
+// newest recorded one is reached by stepping on. Taking a step (or playing) from
+// an earlier step discards the later history, as typing after an undo drops the
+// redo; the slider then ends at the current step.
+#pragma once
+
+#include <QWidget>
+
+class QLabel;
+class QPushButton;
+class QSlider;
+class QSpinBox;
+
+namespace rbw {
+
+class Session;
+
+class HistoryScrubber : public QWidget {
+    Q_OBJECT
+public:
+    explicit HistoryScrubber(Session* session, QWidget* parent = nullptr);
+
+    // Follows the session: the slider's range is the recorded history, its value the
+    // current step. Cheap; the main window calls it when the state changed.
+    void sync();
+
+    QSlider* slider() const { return slider_; }
+    QSpinBox* stepBox() const { return stepBox_; }
+    QPushButton* goButton() const { return goButton_; }
+    QLabel* label() const { return label_; }
+
+signals:
+    // The student asked for step k (slider or Go). The main window stops playing and
+    // calls Session::goToStep(k).
+    void stepRequested(long k);
+    // Escape in the step box: the keys go back to the view, nothing else happens.
+    void focusReturnRequested();
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    void onSliderValueChanged(int value);
+
+    Session* session_;
+    QSlider* slider_ = nullptr;
+    QLabel* label_ = nullptr;
+    QSpinBox* stepBox_ = nullptr;
+    QPushButton* goButton_ = nullptr;
+    bool syncing_ = false;
+};
+
+} // namespace rbw
