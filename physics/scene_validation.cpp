@@ -3,6 +3,7 @@
 #include "physics/scene.h"
 #include "physics/contact/settings.h"
 #include "physics/integrator_registry.h"
+#include "physics/validation_detail.h"
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -16,56 +17,7 @@ namespace rbw {
 
 namespace {
 
-constexpr double kMaxDouble = std::numeric_limits<double>::max();
-
-// The shortest text that reads back as the same double: 0.1, not 0.10000000000000001.
-std::string num(double x)
-{
-    char buffer[64];
-    const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, x);
-    return std::string(buffer, r.ptr);
-}
-
-// x (finite, > 0) to three significant digits for a message: "5.08e-310", "100".
-std::string approx(double x)
-{
-    char buffer[64];
-    const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::general, 3);
-    return std::string(buffer, r.ptr);
-}
-
-// A limit (finite, > 0) to two significant digits, rounded towards the allowed side
-// (up for a lower limit, down for an upper one), so that the limit a message prints
-// is itself allowed: 1.0943e-307 as a lower limit is "1.1e-307".
-std::string limit(double x, bool lower)
-{
-    if (!(std::isfinite(x) && x > 0.0)) {
-        return num(x);
-    }
-    char buffer[64];
-    const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::scientific, 1);
-    const std::string text(buffer, r.ptr);   // "d.de±XX"
-    int mantissa = (text[0] - '0') * 10 + (text[2] - '0');   // 10 ... 99, times 10^(exponent - 1)
-    int exponent = std::atoi(text.c_str() + 4);
-    auto value = [&] {
-        return std::strtod((std::to_string(mantissa) + "e" + std::to_string(exponent - 1)).c_str(), nullptr);
-    };
-    // Rounded to nearest, the two digits are off by at most one unit.
-    if (lower && value() < x && ++mantissa == 100) {
-        mantissa = 10;
-        ++exponent;
-    }
-    if (!lower && value() > x && --mantissa == 9) {
-        mantissa = 99;
-        --exponent;
-    }
-    return approx(value());
-}
-
-std::string vec(const Vec3& v)
-{
-    return "[" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + "]";
-}
+using namespace validation;
 
 void requireFinite(std::vector<SceneIssue>& out, const std::string& path, const Vec3& v)
 {
@@ -77,30 +29,6 @@ void requireFinite(std::vector<SceneIssue>& out, const std::string& path, const 
 bool knownConvention(InertiaConvention c)
 {
     return c == InertiaConvention::Standard || c == InertiaConvention::CourseTemplate;
-}
-
-std::string quoted(const std::string& name)
-{
-    return "\"" + messageText(name) + "\"";
-}
-
-// "a, b" for a message: at most the first 10 names, each cut by messageText(), so a
-// scene of 100 000 bodies does not put every name into every message.
-template <class Item>
-std::string nameList(const std::vector<Item>& items)
-{
-    constexpr std::size_t kShown = 10;
-    if (items.empty()) {
-        return "none";
-    }
-    std::string list;
-    for (std::size_t i = 0; i < items.size() && i < kShown; ++i) {
-        list += (i == 0 ? "" : ", ") + messageText(items[i].name);
-    }
-    if (items.size() > kShown) {
-        list += ", \u2026 (" + std::to_string(items.size()) + " in all)";
-    }
-    return list;
 }
 
 bool isBody(const SceneDef& scene, int b)
@@ -167,84 +95,6 @@ void checkOrientation(std::vector<SceneIssue>& out, const std::string& at, const
     } else if (n2 == 0.0) {
         out.push_back({at + ".orientation", "the quaternion's length underflows (|q|^2 rounds to 0), so it cannot "
                                             "be normalised; give it a length near 1"});
-    }
-}
-
-// Which sum of squares entry k of I0 = M/12 diag(b^2 + c^2, a^2 + c^2, a^2 + b^2) holds.
-const char* const kSquares[3] = {"b\u00b2 + c\u00b2", "a\u00b2 + c\u00b2", "a\u00b2 + b\u00b2"};
-
-// A movable body's constants and initial state, which the world derives once
-// (massProperties(), initialState()), must be finite doubles: M, 1/M and the diagonals
-// of I0 and I0^-1 finite and > 0, then L0 = I(r0) omega0 and omega = I^-1 L0 finite.
-// The first that is not is reported at the input that makes it so, with the limit
-// that input must keep. Called only when mass, size, omega0, the orientation and the
-// convention are valid on their own.
-void checkDerived(std::vector<SceneIssue>& out, const std::string& at, const BodyDef& b,
-                  InertiaConvention convention)
-{
-    // The sums of squares alone: the I0 of a body of mass 12, by the world's own
-    // formula (boxInertiaBody computes 12/12 * (b^2 + c^2), exactly the sum).
-    const Vec3 squares = boxInertiaBody(b.size, 12.0).diagonal();
-    for (int k = 0; k < 3; ++k) {
-        if (!std::isfinite(squares[k])) {
-            // a^2 + b^2 <= DBL_MAX when a, b <= sqrt(DBL_MAX / 2) = 9.48e153.
-            out.push_back({at + ".size", "edges " + vec(b.size) + " make " + kSquares[k] +
-                                             " overflow, so I0 cannot be computed; every edge must be at most " +
-                                             limit(std::sqrt(kMaxDouble / 2.0), false) + " m"});
-            return;
-        }
-        if (squares[k] == 0.0) {
-            // x^2 >= DBL_MIN > 0 when x >= sqrt(DBL_MIN) = 1.49e-154.
-            out.push_back({at + ".size", "edges " + vec(b.size) + " make " + kSquares[k] +
-                                             " underflow to 0, so I0 would have a zero entry; one of those two "
-                                             "edges must be at least " +
-                                             limit(std::sqrt(std::numeric_limits<double>::min()), true) + " m"});
-            return;
-        }
-    }
-    const MassProperties mp = massProperties(b);
-    if (!(std::isfinite(mp.invM) && mp.invM > 0.0)) {
-        out.push_back({at + ".mass", num(b.mass) + " makes 1/M overflow; must be at least " +
-                                         limit(1.0 / kMaxDouble, true) + " kg"});
-        return;
-    }
-    const double sMin = squares.minCoeff();
-    const double sMax = squares.maxCoeff();
-    for (int k = 0; k < 3; ++k) {
-        if (!std::isfinite(mp.I0_B(k, k))) {
-            // M/12 sMax <= DBL_MAX. Overflow implies sMax > 12, so DBL_MAX / sMax * 12 is finite.
-            out.push_back({at + ".mass", num(b.mass) + " makes I0 overflow (I0 = M/12 (" + kSquares[k] +
-                                             ") exceeds the largest double); for this size the mass must be at most " +
-                                             limit(kMaxDouble / sMax * 12.0, false) + " kg"});
-            return;
-        }
-    }
-    for (int k = 0; k < 3; ++k) {
-        const double I0 = mp.I0_B(k, k);
-        if (!(I0 > 0.0 && std::isfinite(mp.I0inv_B(k, k)) && mp.I0inv_B(k, k) > 0.0)) {
-            // 1/I0 <= DBL_MAX when M/12 sMin >= 1/DBL_MAX, i.e. M >= 12 / (sMin DBL_MAX),
-            // computed without overflowing either product.
-            const double least = sMin >= 1.0 ? 12.0 / sMin / kMaxDouble : 12.0 / (sMin * kMaxDouble);
-            const std::string value = I0 == 0.0 ? "underflows to 0" : "= " + approx(I0) + ", too small";
-            out.push_back({at + ".mass", num(b.mass) + " makes I0^-1 overflow (I0 = M/12 (" + kSquares[k] + ") " +
-                                             value + " for its inverse to be a finite double)" +
-                                             "; for this size the mass must be at least " + limit(least, true) +
-                                             " kg"});
-            return;
-        }
-    }
-    const BodyState s0 = initialState(b, mp, convention);
-    if (!s0.L_W.allFinite() || !s0.omega_W.allFinite()) {
-        // |L0_i| <= sqrt(3) Imax |omega0|, and each term of omega = I^-1 L0 is at most
-        // sqrt(3) Imax/Imin |omega0|; with |omega0| <= DBL_MAX / (6 Imax max(1, 1/Imin))
-        // every product and sum stays below DBL_MAX.
-        const double iMax = mp.I0_B.diagonal().maxCoeff();
-        const double iMin = mp.I0_B.diagonal().minCoeff();
-        const double most = kMaxDouble / 6.0 / iMax / std::max(1.0, 1.0 / iMin);
-        out.push_back({at + ".angular_velocity",
-                       "L0 = I(r0) \u03c90 overflows (|\u03c90| = " + approx(b.omega0_W.stableNorm()) +
-                           " rad/s, I0 up to " + approx(iMax) + " kg m\u00b2); for this body |\u03c90| must be at most " +
-                           limit(most, false) + " rad/s"});
     }
 }
 

@@ -1,8 +1,7 @@
 // The checks that stop a run before a blown-up number reaches a view
 // (docs/stability.md, docs/architecture.md "Errors in layers"):
 //   finite_check   the first non-finite x, v, r, R, L, I^-1 or omega names step, body and quantity;
-//   energy_bound   before the integration: each movable body's T_n and its bound T_max;
-//   energy_check   after it: the first body with T_{n+1} > T_max (scene key energy_jump).
+// (energy_bound and energy_check, the rule on a jump of T, are in energy_jump_stage.h)
 // and, outside the pipeline, the checks of everything else a view prints (World calls
 // them: after a traced step, and from checkOutputs()):
 //   the constants I0 and I0^-1, each body's P = M v, the diagnostics (energies and
@@ -43,22 +42,6 @@ public:
     void run(StepContext& ctx) override;
 };
 
-class EnergyBoundStage final : public PipelineStep {
-public:
-    explicit EnergyBoundStage(const std::vector<MassProperties>& mass);
-    PipelineStage kind() const override { return PipelineStage::EnergyBound; }
-    void run(StepContext& ctx) override;
-
-private:
-    std::vector<double> maxInvInertia_;   // per body: largest entry of I0^-1 (diagonal) [1/(kg m^2)]
-};
-
-class EnergyCheckStage final : public PipelineStep {
-public:
-    PipelineStage kind() const override { return PipelineStage::EnergyCheck; }
-    void run(StepContext& ctx) override;
-};
-
 // An input magnitude from this size on (or a mass or length from 1/kRangeEdge down) is
 // at the edge of the double range (rule (b) above).
 inline constexpr double kRangeEdge = 1e150;
@@ -90,5 +73,8 @@ StepStatus checkDerivedOutputs(const CheckScope& scope, const std::vector<BodySt
                                const Diagnostics& d, CheckPoint at);
 //   every entry of a step's trace, in the order recorded:
 StepStatus checkTrace(const CheckScope& scope, const StepTrace& trace, CheckPoint at);
+// The status of body b's kinetic energy T = 1/2 M |v|^2 + 1/2 omega.L when it overflowed
+// from a finite state (energy_check; a non-finite number, not a jump):
+StepStatus nonFiniteKineticEnergy(const CheckScope& scope, CheckPoint at, int body);
 
 } // namespace rbw

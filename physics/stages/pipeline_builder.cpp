@@ -4,6 +4,7 @@
 #include "physics/stages/box_box_stage.h"
 #include "physics/stages/box_plane_stage.h"
 #include "physics/stages/checks.h"
+#include "physics/stages/energy_jump_stage.h"
 #include "physics/stages/correction_stage.h"
 #include "physics/stages/forces_stage.h"
 #include "physics/stages/integration_stage.h"
