@@ -2,6 +2,8 @@
 
 #include "physics/quantities.h"
 
+#include <type_traits>
+
 namespace rbw {
 
 const char* stageName(Stage s)
@@ -97,6 +99,29 @@ StartField startField(std::string_view id)
 bool hasStartValue(std::string_view id)
 {
     return startField(id) != StartField::None;
+}
+
+std::vector<double> traceValueComponents(const TraceValue& value)
+{
+    return std::visit(
+        [](const auto& v) -> std::vector<double> {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, double>) {
+                return {v};
+            } else if constexpr (std::is_same_v<T, Vec3>) {
+                return {v.x(), v.y(), v.z()};
+            } else if constexpr (std::is_same_v<T, Quat>) {
+                return {v.w(), v.x(), v.y(), v.z()};
+            } else {
+                std::vector<double> out;
+                out.reserve(9);
+                for (int i = 0; i < 3; ++i) {
+                    for (int j = 0; j < 3; ++j) out.push_back(v(i, j));
+                }
+                return out;
+            }
+        },
+        value);
 }
 
 bool startValue(const StepTrace& trace, std::string_view id, int body, int index, TraceValue* out)

@@ -49,6 +49,11 @@ struct QuantityInfo {
 // A scalar, a 3-vector, a quaternion ([w, x, y, z] when written out) or a 3x3 matrix.
 using TraceValue = std::variant<double, Vec3, Quat, Mat3>;
 
+// Its numbers in one order: a scalar as itself, a vector as (x, y, z), a quaternion as
+// (w, x, y, z) (the one order, math_types.h), a matrix row by row (9 numbers). What the
+// checker compares, the plots draw and the tests read.
+std::vector<double> traceValueComponents(const TraceValue& value);
+
 struct TraceEntry {
     const QuantityInfo* info;
     int body;     // index into the world's bodies, -1 for a world-level quantity

@@ -33,26 +33,8 @@ inline rbw::SceneDef lessonScene(const QString& relative)
 // (w, x, y, z), Mat3 -> 9 entries row by row.
 inline QList<double> flatten(const rbw::TraceValue& value)
 {
-    return std::visit(
-        [](const auto& v) -> QList<double> {
-            using T = std::decay_t<decltype(v)>;
-            if constexpr (std::is_same_v<T, double>) {
-                return {v};
-            } else if constexpr (std::is_same_v<T, Vec3>) {
-                return {v.x(), v.y(), v.z()};
-            } else if constexpr (std::is_same_v<T, Quat>) {
-                return {v.w(), v.x(), v.y(), v.z()};
-            } else {
-                QList<double> out;
-                for (int i = 0; i < 3; ++i) {
-                    for (int j = 0; j < 3; ++j) {
-                        out << v(i, j);
-                    }
-                }
-                return out;
-            }
-        },
-        value);
+    const std::vector<double> v = rbw::traceValueComponents(value);
+    return QList<double>(v.begin(), v.end());
 }
 
 inline QList<double> flat(const Vec3& v) { return {v.x(), v.y(), v.z()}; }

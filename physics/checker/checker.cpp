@@ -26,27 +26,6 @@ namespace {
 
 using Values = std::vector<double>;
 
-Values flat(const TraceValue& value)
-{
-    return std::visit(
-        [](const auto& v) -> Values {
-            using T = std::decay_t<decltype(v)>;
-            if constexpr (std::is_same_v<T, double>) {
-                return {v};
-            } else if constexpr (std::is_same_v<T, Vec3>) {
-                return {v.x(), v.y(), v.z()};
-            } else if constexpr (std::is_same_v<T, Quat>) {
-                return {v.w(), v.x(), v.y(), v.z()};
-            } else {
-                Values out;
-                for (int i = 0; i < 3; ++i)
-                    for (int j = 0; j < 3; ++j) out.push_back(v(i, j));
-                return out;
-            }
-        },
-        value);
-}
-
 Vec3 vec(const Values& v) { return Vec3(v[0], v[1], v[2]); }
 Mat3 mat(const Values& v)
 {
@@ -131,7 +110,7 @@ public:
     {
         AnswerResult r;
         const TraceEntry* e = entryFor(t_, a.quantity, a.body, a.contact, a.index);
-        r.expected = flat(e->value);
+        r.expected = traceValueComponents(e->value);
         const Key key{a.quantity, a.contact >= 0 ? -1 : a.body, a.contact, a.index};
         if (matches(a.value, r.expected, rel_)) {
             r.verdict = Verdict::Correct;
@@ -257,7 +236,7 @@ private:
         if (re.ok && re.student) return re;
         const TraceEntry* e = entryFor(t_, k.id, k.body, k.contact, k.index);
         if (e == nullptr) return v;
-        v.v = flat(e->value);
+        v.v = traceValueComponents(e->value);
         v.err.assign(v.v.size(), 0.0);
         v.ok = true;
         return v;
@@ -271,7 +250,7 @@ private:
             const ContactInputs in = contactInputs(a.contact);
             for (const MistakeInfo& m : mistakeCatalogue()) {
                 TraceValue v;
-                if (handImpulse(in, m.mistake).value(a.quantity, v) && matches(a.value, flat(v), rel_)) {
+                if (handImpulse(in, m.mistake).value(a.quantity, v) && matches(a.value, traceValueComponents(v), rel_)) {
                     out.push_back(m.id);
                 }
             }
@@ -283,7 +262,7 @@ private:
         const BodyStepInputs in = bodyInputs(a.body);
         for (const MistakeInfo& m : mistakeCatalogue()) {
             TraceValue v;
-            if (handEulerStep(in, m.mistake).value(a.quantity, a.index, v) && matches(a.value, flat(v), rel_)) {
+            if (handEulerStep(in, m.mistake).value(a.quantity, a.index, v) && matches(a.value, traceValueComponents(v), rel_)) {
                 out.push_back(m.id);
             }
         }
@@ -325,7 +304,7 @@ private:
         const ContactHeader& h = t_.contacts[k];
         auto get = [&](const QuantityInfo& q) -> Values {
             const TraceEntry* e = entryFor(t_, q.id, -1, k, -1);
-            return e != nullptr ? flat(e->value) : Values{};
+            return e != nullptr ? traceValueComponents(e->value) : Values{};
         };
         auto vecOr0 = [](const Values& v) { return v.size() == 3 ? vec(v) : Vec3(Vec3::Zero()); };
         in.g.p_W = vecOr0(get(q::contact_point));
@@ -354,7 +333,7 @@ private:
     {
         if (w_.massProperties()[b].invM == 0.0 || !w_.scene().bodies[b].angularResponse) return Mat3::Zero();
         const TraceEntry* e = entryFor(t_, q::inverse_inertia_world.id, b, -1, -1);
-        return e != nullptr ? mat(flat(e->value)) : Mat3(Mat3::Zero());
+        return e != nullptr ? mat(traceValueComponents(e->value)) : Mat3(Mat3::Zero());
     }
 
     const World& w_;
@@ -380,7 +359,7 @@ std::string answerProblem(const StepTrace& trace, const Answer& a)
         return "the workbook has no " + a.quantity + (a.index >= 0 ? " " + std::to_string(a.index) : std::string()) +
                " for this " + (a.contact >= 0 ? "contact" : "body") + " in step " + std::to_string(trace.step);
     }
-    const size_t n = flat(e->value).size();
+    const size_t n = traceValueComponents(e->value).size();
     if (a.value.size() != n) {
         const char* shape = n == 1 ? "a number" : n == 3 ? "a vector of 3 numbers" : n == 4 ? "a quaternion [w, x, y, z]"
                                                                                            : "a 3x3 matrix (3 rows of 3)";

@@ -12,29 +12,6 @@ namespace rbw {
 
 namespace {
 
-std::vector<double> flatten(const TraceValue& value)
-{
-    return std::visit(
-        [](const auto& v) -> std::vector<double> {
-            using T = std::decay_t<decltype(v)>;
-            if constexpr (std::is_same_v<T, double>) {
-                return {v};
-            } else if constexpr (std::is_same_v<T, Vec3>) {
-                return {v.x(), v.y(), v.z()};
-            } else if constexpr (std::is_same_v<T, Quat>) {
-                return {v.w(), v.x(), v.y(), v.z()};   // the one quaternion order: w, x, y, z
-            } else {
-                std::vector<double> out;
-                out.reserve(9);
-                for (int i = 0; i < 3; ++i) {
-                    for (int j = 0; j < 3; ++j) out.push_back(v(i, j));
-                }
-                return out;
-            }
-        },
-        value);
-}
-
 QByteArray csvField(const QString& text)
 {
     QString t = text;
@@ -88,7 +65,7 @@ bool QuantitySeries::append(const StepTrace& trace)
     if (!std::isfinite(trace.time)) return false;
     for (const TraceEntry& e : trace.entries) {
         if (!key_.matches(e)) continue;
-        std::vector<double> values = flatten(e.value);
+        std::vector<double> values = traceValueComponents(e.value);
         for (double v : values) {
             if (!std::isfinite(v)) return false;   // never drawn
         }
