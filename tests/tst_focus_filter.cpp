@@ -49,6 +49,9 @@ StepTrace handTrace()
     t.add(kImpulse, 1, 3.5, 2);
     t.add(kCorrection, 2, Vec3(0, 0.01, 0), 0);
     t.add(kProbe, 1, Vec3(0, 1, 0), 0);
+    // The state when the step began: body b at x = (b, 0.5, 0).
+    t.start.bodies.resize(8);
+    for (int b = 0; b < 8; ++b) t.start.bodies[static_cast<size_t>(b)].x_W = Vec3(b, 0.5, 0);
     return t;
 }
 
@@ -139,6 +142,11 @@ void TestFocusFilter::focusTraceKeepsTheStep()
     QCOMPARE(focused.step, 41L);
     QCOMPARE(focused.time, 0.42);
     QCOMPARE(focused.diagnostics.total, 7.5);
+    // The state when the step began, for every body (the derivation's {{start:...}}).
+    QCOMPARE(int(focused.start.bodies.size()), 8);
+    TraceValue x;
+    QVERIFY(startValue(focused, "position", 1, -1, &x));
+    QVERIFY(std::get<Vec3>(x) == Vec3(1.0, 0.5, 0.0));
     // The headers travel with their contacts.
     QCOMPARE(QString::fromLatin1(focused.contacts[0].feature), QString("vertex-plane"));
     QCOMPARE(focused.contacts[0].pointCount, 4);

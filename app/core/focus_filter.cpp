@@ -26,6 +26,8 @@ StepTrace focusTrace(const StepTrace& trace, int body)
     out.step = trace.step;
     out.time = trace.time;
     out.diagnostics = trace.diagnostics;
+    // Every body's state when the step began, by body index (the entries keep theirs).
+    out.start = trace.start;
     // Contact c of the trace becomes contact renumber[c] of the selection, or -1.
     std::vector<int> renumber(trace.contacts.size(), -1);
     for (size_t c = 0; c < trace.contacts.size(); ++c) {
