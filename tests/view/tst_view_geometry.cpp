@@ -54,6 +54,7 @@ private slots:
     void lesson3ContactAtItsCollisionStep();
     void lesson4GravityArrowsAtTheCentres();
     void impulseArrowsAreTheTracesImpulses();
+    void manifoldPointsAreDrawnWithBothImpulses();
     void stateArrowsAreTheState();
     void badTraceEntriesAreSkipped();
     void rayBoxHit_data();
@@ -256,6 +257,68 @@ void TestViewGeometry::impulseArrowsAreTheTracesImpulses()
         QVERIFY(near(a.to_W - a.from_W, scale * a.value, 1e-12 * g.scales.refLength));
     }
     QCOMPARE(seen, 4);   // n, J n, J_t t and their sum
+}
+
+// Lesson 11 (contact_model "manifold"): every manifold point of the step is drawn, with
+// the solver's accumulated impulses. Independent check: the solver hands each body the
+// sum of its points' impulses as a load, F_c = P / h (manifold_contact_stage.cpp), with
+// P = sum over the points where the body is A of (lambda_n n + lambda_t) minus the same
+// sum where it is B. So sum(total_W) over a body's points must be F_c h.
+void TestViewGeometry::manifoldPointsAreDrawnWithBothImpulses()
+{
+    World w(lessonScene("11-resting-contact/scene.json"));
+    StepTrace t;
+    // Step 10 (t = 0.17 s): the slider slides (friction), the stack rests on the
+    // ground and on itself, nothing sleeps yet.
+    for (int k = 0; k <= 10; ++k) QVERIFY(w.step(&t).ok);
+    const ViewSnapshot s = makeViewSnapshot(w, &t);
+    const TraceEntry* count = t.find(q::manifold_points.id, -1, -1);
+    QVERIFY(count != nullptr);
+    QCOMPARE(int(s.contacts.size()), int(std::get<double>(count->value)));
+    QVERIFY(s.contacts.size() >= 12);   // 4 corners of each box on the ground or on another box
+
+    const double h = w.scene().dt;
+    int boxBox = 0;
+    int checked = 0;
+    for (int b = 0; b < int(w.scene().bodies.size()); ++b) {
+        const TraceEntry* F = t.find(q::contact_force.id, b, -1);
+        if (F == nullptr) continue;
+        Vec3 P = Vec3::Zero();
+        Vec3 Pn = Vec3::Zero();
+        for (const ViewSnapshot::Contact& c : s.contacts) {
+            // Each drawn point is the trace's point, with its n, lambda_n and lambda_t.
+            const TraceEntry* p = t.find(q::manifold_point.id, c.bodyA, c.index);
+            const TraceEntry* n = t.find(q::manifold_normal.id, c.bodyA, c.index);
+            const TraceEntry* ln = t.find(q::normal_impulse.id, c.bodyA, c.index);
+            const TraceEntry* lt = t.find(q::tangent_impulse.id, c.bodyA, c.index);
+            QVERIFY2(p != nullptr && n != nullptr && ln != nullptr && lt != nullptr,
+                     qPrintable(QStringLiteral("contact %1 of body %2").arg(c.index).arg(c.bodyA)));
+            QVERIFY(c.p_W == std::get<Vec3>(p->value));
+            QVERIFY(c.n_W == std::get<Vec3>(n->value));
+            QVERIFY(c.J == std::get<double>(ln->value));
+            QVERIFY(c.friction_W == std::get<Vec3>(lt->value));
+            QVERIFY(c.total_W == Vec3(c.J * c.n_W + c.friction_W));
+            const double sign = c.bodyA == b ? 1.0 : (c.bodyB == b ? -1.0 : 0.0);
+            P += sign * c.total_W;
+            Pn += sign * c.impulse_W;
+            if (sign != 0.0 && c.bodyB >= 0) ++boxBox;
+        }
+        const Vec3 expected = h * std::get<Vec3>(F->value);
+        QVERIFY2((P - expected).norm() <= 1e-12 * expected.norm(), qPrintable(text(P) + " vs " + text(expected)));
+        if (w.scene().bodies[b].name == "slider") {
+            // Negative control: the sliding box's friction impulse is part of what was applied.
+            QVERIFY((Pn - expected).norm() > 1e-3 * expected.norm());
+        }
+        ++checked;
+    }
+    QVERIFY(checked >= 4);   // the slider and the three boxes of the stack
+    QVERIFY(boxBox > 0);     // and the stack's box-box points among them
+
+    // Each point is drawn as n, J n, the friction impulse and their sum, like a course contact.
+    const view::FrameGeometry g = view::buildFrameGeometry(s, {}, view::FrameOptions{});
+    int normals = 0;
+    for (const view::ArrowRecord& a : g.arrows) normals += a.kind == view::ArrowKind::Normal ? 1 : 0;
+    QCOMPARE(normals, int(s.contacts.size()));
 }
 
 // The v, ω and L arrows are the world's state at each body's centre, drawn only when

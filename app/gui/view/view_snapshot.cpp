@@ -118,13 +118,16 @@ ViewSnapshot makeViewSnapshot(const World& world, const StepTrace* trace)
                 break;
             case Stage::Collision:
                 if (e.index < 0 || e.index >= contactCount) break;
-                if (is(e, q::contact_point)) {
+                // The course model's rows, or a manifold point's (contact_model "manifold":
+                // the clipped point, n, the accumulated lambda_n and lambda_t after the
+                // solver's iterations, both applied to A as P = lambda_n n + lambda_t).
+                if (is(e, q::contact_point) || is(e, q::manifold_point)) {
                     if (const Vec3* v = vec3Of(e)) contacts[e.index].p_W = *v;
-                } else if (is(e, q::contact_normal)) {
+                } else if (is(e, q::contact_normal) || is(e, q::manifold_normal)) {
                     if (const Vec3* v = vec3Of(e)) contacts[e.index].n_W = *v;
-                } else if (is(e, q::impulse)) {
+                } else if (is(e, q::impulse) || is(e, q::normal_impulse)) {
                     if (const double* d = scalarOf(e)) contacts[e.index].J = *d;
-                } else if (is(e, q::friction_impulse)) {
+                } else if (is(e, q::friction_impulse) || is(e, q::tangent_impulse)) {
                     if (const Vec3* v = vec3Of(e)) contacts[e.index].friction_W = *v;
                 }
                 break;
