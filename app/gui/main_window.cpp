@@ -510,6 +510,10 @@ void MainWindow::createDocks()
     bodyPlotDock->setWidget(bodyPlotPanel_);
     addDockWidget(Qt::BottomDockWidgetArea, bodyPlotDock);
     tabifyDockWidget(plotDock, bodyPlotDock);
+    // A dock that is a tab behind another stays "visible" as a widget; its plots are
+    // redrawn only while it can be seen (visibilityChanged), not behind the other tab.
+    connect(plotDock, &QDockWidget::visibilityChanged, plotPanel_, &PlotPanel::setOnScreen);
+    connect(bodyPlotDock, &QDockWidget::visibilityChanged, bodyPlotPanel_, &BodyPlotPanel::setOnScreen);
 
     // The physics statement behind a row of the table (Show code), beside the plots so
     // that the table and the code are on screen together.

@@ -139,12 +139,23 @@ QList<QPointF> BodyPlotPanel::points(Quantity q, int body) const
 
 void BodyPlotPanel::scheduleRefresh()
 {
+    if (!onScreen_) {
+        stale_ = true;
+        return;
+    }
     if (!refresh_->isActive()) refresh_->start();
+}
+
+void BodyPlotPanel::setOnScreen(bool on)
+{
+    onScreen_ = on;
+    if (on && stale_) refreshNow();
 }
 
 void BodyPlotPanel::refreshNow()
 {
     refresh_->stop();
+    stale_ = false;
     const int q = tabs_->currentIndex();
     if (q < 0 || q >= QuantityCount) return;
     Chart& c = charts_[q];

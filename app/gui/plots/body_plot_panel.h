@@ -6,7 +6,8 @@
 //
 // The numbers are StepTrace::diagnostics.bodies (physics/diagnostics.h), recorded by
 // the physics after each step; nothing is computed here. Drawing is throttled like
-// PlotPanel's (10 Hz, at most kMaxDrawn points per line, every sample kept).
+// PlotPanel's (10 Hz, at most kMaxDrawn points per line, every sample kept, and only
+// while the panel is visible).
 #pragma once
 
 #include "physics/diagnostics.h"
@@ -53,6 +54,10 @@ public:
     // Renders the current tab's chart at twice its size on white.
     bool exportPng(const QString& path, QString* error);
     void refreshNow();
+    // Whether the panel can be seen: false while its dock is a tab behind another
+    // (QDockWidget::visibilityChanged; the widget itself stays "visible" there). Off
+    // screen, samples are stored and the lines redrawn when it comes back.
+    void setOnScreen(bool on);
 
 private:
     struct Chart {
@@ -72,6 +77,11 @@ private:
     std::array<Chart, QuantityCount> charts_;
     QTabWidget* tabs_ = nullptr;
     QTimer* refresh_ = nullptr;
+    // Samples arrived while the panel was off screen: the lines are redrawn when it is
+    // shown. QLineSeries::replace() lays out and strokes the path even for a chart
+    // nobody sees: 50 lines at 10 Hz in lesson 4's fifty boxes.
+    bool onScreen_ = true;
+    bool stale_ = false;
 };
 
 } // namespace rbw

@@ -1,6 +1,7 @@
 #include "app/gui/plots/plot_panel.h"
 
 #include "app/gui/plots/axis_fit.h"
+#include "app/gui/plots/export_dialog.h"
 #include "app/gui/plots/plot_axis_range.h"
 #include "app/gui/plots/plot_decimation.h"
 
@@ -10,15 +11,12 @@
 #include <QCoreApplication>
 #include <QGraphicsLayout>
 #include <QCheckBox>
-#include <QDir>
-#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QImage>
 #include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QMenu>
-#include <QMessageBox>
 #include <QPainter>
 #include <QPixmap>
 #include <QSaveFile>
@@ -342,12 +340,26 @@ void PlotPanel::setMaxDisplayPoints(int maxPoints)
 
 void PlotPanel::scheduleRefresh()
 {
+    // Off screen (a closed dock, or a tab behind another: setOnScreen): redrawn when
+    // it comes back, since QLineSeries::replace() lays out and strokes the path even
+    // for a chart nobody sees.
+    if (!onScreen_) {
+        stale_ = true;
+        return;
+    }
     if (!refreshTimer_->isActive()) refreshTimer_->start();
+}
+
+void PlotPanel::setOnScreen(bool on)
+{
+    onScreen_ = on;
+    if (on && stale_) refreshNow();
 }
 
 void PlotPanel::refreshNow()
 {
     refreshTimer_->stop();
+    stale_ = false;
     updateDisplayedPoints();
     if (axesDirty_) {
         for (int c = 0; c < kPlotChartCount; ++c) updateAxes(static_cast<PlotChart>(c));
@@ -377,10 +389,12 @@ void PlotPanel::syncSeries(SeriesParts& s, PlotQuantity q, int stride)
         appendDisplayPoints(data_, q, 0, shown, stride, pts);
         s.line->replace(pts);
     } else if (shown > s.shownSamples) {
-        // Only the new samples are appended: one signal, no redraw from the data.
-        QList<QPointF> pts;
+        // The new samples after the ones shown, in one replace(): Qt 6.4's
+        // QXYSeries::append(QList) appends point by point, and each point lays out and
+        // strokes the whole line again (a quarter of the GUI thread in lesson 4).
+        QList<QPointF> pts = s.line->points();
         appendDisplayPoints(data_, q, s.shownSamples, shown, stride, pts);
-        s.line->append(pts);
+        s.line->replace(pts);
     }
     s.shownSamples = shown;
     s.shownStride = stride;
@@ -482,22 +496,14 @@ bool PlotPanel::exportCsv(const QString& path, QString* error)
 
 void PlotPanel::exportPngInteractive()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export plot as PNG"),
-                                                      QDir::home().filePath(QStringLiteral("plot.png")),
-                                                      tr("PNG images (*.png)"));
-    if (path.isEmpty()) return;
-    QString error;
-    if (!exportPng(path, &error)) QMessageBox::warning(this, tr("Export PNG"), error);
+    exportPlotInteractively(this, PlotExportFormat::Png, QStringLiteral("plot.png"),
+                            [this](const QString& path, QString* error) { return exportPng(path, error); });
 }
 
 void PlotPanel::exportCsvInteractive()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export plot data as CSV"),
-                                                      QDir::home().filePath(QStringLiteral("plot.csv")),
-                                                      tr("CSV files (*.csv)"));
-    if (path.isEmpty()) return;
-    QString error;
-    if (!exportCsv(path, &error)) QMessageBox::warning(this, tr("Export CSV"), error);
+    exportPlotInteractively(this, PlotExportFormat::Csv, QStringLiteral("plot.csv"),
+                            [this](const QString& path, QString* error) { return exportCsv(path, error); });
 }
 
 } // namespace rbw

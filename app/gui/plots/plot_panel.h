@@ -77,6 +77,9 @@ public:
     // to date; the others catch up when they are shown.
     int displayedPointCount(const QString& id) const;
     int maxDisplayPoints() const { return maxDisplayPoints_; }
+    // Whether the panel can be seen (BodyPlotPanel::setOnScreen): off screen, samples
+    // are stored and the charts redrawn when it comes back.
+    void setOnScreen(bool on);
     void setMaxDisplayPoints(int maxPoints);   // at least 2; default kDefaultMaxDisplayPoints
     static constexpr int kDefaultMaxDisplayPoints = 1200;
 
@@ -126,6 +129,8 @@ private:
     QString lastError_;
     QTabWidget* tabs_ = nullptr;
     QTimer* refreshTimer_ = nullptr;
+    bool onScreen_ = true;
+    bool stale_ = false;   // samples arrived while off screen: redraw when shown
     QAction* exportPngAction_ = nullptr;
     QAction* exportCsvAction_ = nullptr;
     std::array<ChartParts, kPlotChartCount> charts_{};

@@ -4,14 +4,13 @@
 #include "app/core/step_history.h"
 #include "app/gui/body_colours.h"
 #include "app/gui/plots/axis_fit.h"
+#include "app/gui/plots/export_dialog.h"
 #include "app/gui/plots/plot_axis_range.h"
 
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
 #include <QCoreApplication>
-#include <QDir>
-#include <QFileDialog>
 #include <QGraphicsLayout>
 #include <QHBoxLayout>
 #include <QBuffer>
@@ -19,7 +18,6 @@
 #include <QLabel>
 #include <QLegend>
 #include <QLineSeries>
-#include <QMessageBox>
 #include <QPainter>
 #include <QTabWidget>
 #include <QTimer>
@@ -327,22 +325,14 @@ bool QuantityPlot::exportPng(const QString& path, QString* error)
 
 void QuantityPlot::exportPngInteractive()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export plot as PNG"),
-                                                      QDir::home().filePath(QStringLiteral("quantity.png")),
-                                                      tr("PNG images (*.png)"));
-    if (path.isEmpty()) return;
-    QString error;
-    if (!exportPng(path, &error)) QMessageBox::warning(this, tr("Export PNG"), error);
+    exportPlotInteractively(this, PlotExportFormat::Png, QStringLiteral("quantity.png"),
+                            [this](const QString& path, QString* error) { return exportPng(path, error); });
 }
 
 void QuantityPlot::exportCsvInteractive()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export plot data as CSV"),
-                                                      QDir::home().filePath(QStringLiteral("quantity.csv")),
-                                                      tr("CSV files (*.csv)"));
-    if (path.isEmpty()) return;
-    QString error;
-    if (!exportCsv(path, &error)) QMessageBox::warning(this, tr("Export CSV"), error);
+    exportPlotInteractively(this, PlotExportFormat::Csv, QStringLiteral("quantity.csv"),
+                            [this](const QString& path, QString* error) { return exportCsv(path, error); });
 }
 
 // --- QuantityPlotPanel ---
