@@ -140,20 +140,68 @@ void prepareManifold(Manifold& m, SolverBody& A, SolverBody& B, const Vec3& xA_W
         applyRow(A, B, p, 1, m.t1_W, p.lambda_t1);
         applyRow(A, B, p, 2, m.t2_W, p.lambda_t2);
     }
+    // The coupling of the normal rows (the manifold's Delassus matrix): a normal
+    // impulse at point j changes v_n at point i by K_ij times it,
+    //   K_ij = 1/M_A + 1/M_B + (r_Ai x n) . I_A^-1 (r_Aj x n) + (r_Bi x n) . I_B^-1 (r_Bj x n)
+    for (int i = 0; i < m.count; ++i) {
+        const ManifoldPoint& pi = m.points[static_cast<std::size_t>(i)];
+        for (int j = 0; j < m.count; ++j) {
+            const ManifoldPoint& pj = m.points[static_cast<std::size_t>(j)];
+            m.K_n[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
+                A.invM + B.invM + pi.rAxd_W[0].dot(pj.IArAxd_W[0]) + pi.rBxd_W[0].dot(pj.IBrBxd_W[0]);
+        }
+    }
 }
 
-double solveManifoldVelocities(Manifold& m, SolverBody& A, SolverBody& B)
+double solveManifoldVelocities(Manifold& m, SolverBody& A, SolverBody& B, int normalSweeps)
 {
     double largest = 0.0;
+    // The normal rows first, all points of the manifold, normalSweeps times:
+    // lambda_n <- max(0, lambda_n + m_n (v_n* - v_n)), applied as the change. The points
+    // share the two bodies, so their rows are coupled through the bodies' rotation; one
+    // pass leaves a residual that depends on the order of the points and turns the
+    // bodies (a symmetric tower starts to rock). A few passes over the manifold
+    // approach the solution of its rows together, as Box2D's block solver does for its
+    // two points (b2ContactSolver::SolveVelocityConstraints; docs/collisions.md).
+    // The sweeps work on the points' v_n alone, through K (prepareManifold): a change
+    // dn at point j moves v_n at point i by K_ij dn, exactly what applying it to the
+    // bodies would. The bodies get the sum of a point's changes once, after the sweeps.
+    // (The points' numbers are copied next to each other for the sweeps.)
+    const int count = m.count;
+    std::array<double, kMaxManifoldPoints> vn{};
+    std::array<double, kMaxManifoldPoints> lambda_n{};
+    std::array<double, kMaxManifoldPoints> m_n{};
+    std::array<double, kMaxManifoldPoints> v_target{};
+    for (int k = 0; k < count; ++k) {
+        const std::size_t uk = static_cast<std::size_t>(k);
+        const ManifoldPoint& p = m.points[uk];
+        vn[uk] = rowVelocity(A, B, p, 0, m.n_W);
+        lambda_n[uk] = p.lambda_n;
+        m_n[uk] = p.m_n;
+        v_target[uk] = p.v_target;
+    }
+    for (int sweep = 0; sweep < normalSweeps; ++sweep) {
+        for (int k = 0; k < count; ++k) {
+            const std::size_t uk = static_cast<std::size_t>(k);
+            const double lambda = std::max(0.0, lambda_n[uk] + m_n[uk] * (v_target[uk] - vn[uk]));
+            const double dn = lambda - lambda_n[uk];
+            if (dn == 0.0) continue;
+            lambda_n[uk] = lambda;
+            // v_n,i += K_ik dn
+            const std::array<double, kMaxManifoldPoints>& K_k = m.K_n[uk];   // K is symmetric
+            for (int i = 0; i < count; ++i) vn[static_cast<std::size_t>(i)] += K_k[static_cast<std::size_t>(i)] * dn;
+            largest = std::max(largest, std::abs(dn));
+        }
+    }
+    for (int k = 0; k < count; ++k) {
+        const std::size_t uk = static_cast<std::size_t>(k);
+        ManifoldPoint& p = m.points[uk];
+        const double applied = lambda_n[uk] - p.lambda_n;
+        p.lambda_n = lambda_n[uk];
+        if (applied != 0.0) applyRow(A, B, p, 0, m.n_W, applied);
+    }
     for (int k = 0; k < m.count; ++k) {
         ManifoldPoint& p = m.points[static_cast<std::size_t>(k)];
-        // Normal first (Box2D-lite's order): lambda_n <- max(0, lambda_n + m_n (v_n* - v_n)),
-        // applied as the change
-        const double vn = rowVelocity(A, B, p, 0, m.n_W);
-        const double lambda = std::max(0.0, p.lambda_n + p.m_n * (p.v_target - vn));
-        const double dn = lambda - p.lambda_n;
-        p.lambda_n = lambda;
-        applyRow(A, B, p, 0, m.n_W, dn);
         // Then friction, bounded by the normal impulse just found:
         // lambda_ti* = lambda_ti - m_ti v_ti, both from the same velocities. Inside the
         // Coulomb cone |lambda_t| <= mu lambda_n it sticks; outside, the point slides and
@@ -187,7 +235,7 @@ double solveManifoldVelocities(Manifold& m, SolverBody& A, SolverBody& B)
             applyRow(A, B, p, 2, m.t2_W, l2 - old2);
             p.lambda_t1 = l1;
             p.lambda_t2 = l2;
-            largest = std::max({largest, std::abs(l1 - old1), std::abs(l2 - old2), std::abs(dn)});
+            largest = std::max({largest, std::abs(l1 - old1), std::abs(l2 - old2)});
             continue;
         }
         p.lambda_t1 = l1;
@@ -201,7 +249,7 @@ double solveManifoldVelocities(Manifold& m, SolverBody& A, SolverBody& B)
         A.omega_W += d1 * p.IArAxd_W[1] + d2 * p.IArAxd_W[2];
         B.v_W -= B.invM * dP_W;
         B.omega_W -= d1 * p.IBrBxd_W[1] + d2 * p.IBrBxd_W[2];
-        largest = std::max({largest, std::abs(l1 - old1), std::abs(l2 - old2), std::abs(dn)});
+        largest = std::max({largest, std::abs(l1 - old1), std::abs(l2 - old2)});
     }
     return largest;
 }

@@ -5,8 +5,9 @@
 //
 // Velocity solve, at every manifold point, with effective masses
 //   m_n = 1 / (1/M_A + 1/M_B + [(I_A^-1 (r_A x n)) x r_A + (I_B^-1 (r_B x n)) x r_B] . n)
-// (and m_t1, m_t2 the same along t1, t2), in every iteration:
-//   normal:    lambda_n <- max(0, lambda_n + m_n (v_target - v_n))
+// (and m_t1, m_t2 the same along t1, t2), in every iteration, manifold by manifold:
+//   normal:    lambda_n <- max(0, lambda_n + m_n (v_target - v_n)), for all points of
+//              the manifold, normal_sweeps times (ManifoldSettings::normalSweeps)
 //   friction:  lambda_ti* = lambda_ti - m_ti v_ti; inside the Coulomb cone
 //              |lambda_t| <= mu lambda_n it sticks, outside it slides and the 2-vector is
 //              scaled back onto the cone
@@ -59,9 +60,10 @@ void prepareManifold(Manifold& m, SolverBody& A, SolverBody& B, const Vec3& xA_W
                      const BodyState& startA, const BodyState* startB, const ManifoldSettings& settings, double h,
                      double restitutionThreshold);
 
-// One velocity iteration over every point of m (normal, then friction); returns
-// the largest change of an accumulated impulse in it [N s].
-double solveManifoldVelocities(Manifold& m, SolverBody& A, SolverBody& B);
+// One velocity iteration over m: normalSweeps passes over the normal rows of all its
+// points, then the friction rows of each point; returns the largest change of an
+// accumulated impulse in it [N s].
+double solveManifoldVelocities(Manifold& m, SolverBody& A, SolverBody& B, int normalSweeps);
 
 // One position iteration of NGS over every point of m; moves x and q of A and B (nullptr
 // for a plane) by the corrections and adds each body's displacement to dxA/dxB. Returns

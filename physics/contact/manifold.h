@@ -71,6 +71,10 @@ struct Manifold {
     double restitution = 0.0;
     int count = 0;
     std::array<ManifoldPoint, kMaxManifoldPoints> points{};
+    // The coupling of the normal rows through the two bodies (contact_solver.cpp,
+    // prepareManifold): K_n[i][j], the change of v_n at point i per unit normal impulse
+    // at point j [1/kg]; K_n[i][i] = 1/m_n.
+    std::array<std::array<double, kMaxManifoldPoints>, kMaxManifoldPoints> K_n{};
     std::source_location where;   // the narrow-phase statement that computed the points
 
     // The key that identifies the pair across steps: (a, b) for two bodies, (a, plane)

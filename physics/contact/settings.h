@@ -4,12 +4,18 @@
 //
 // Glossary
 //   iterations         velocity iterations of the sequential-impulse solver         [-]
+//   normalSweeps       passes over one manifold's normal rows in each iteration,
+//                      before its friction rows: its points share two bodies, and
+//                      one pass leaves an order-dependent residual that rocks stacks
+//                      (docs/collisions.md, "Tall stacks")                            [-]
 //   margin             speculative margin: points up to this far apart are kept, so
 //                      a body approaching a surface is stopped at it in time         [m]
 //   slop               overlap the position fix leaves (Box2D b2_linearSlop)         [m]
 //   beta               fraction of the overlap removed per position iteration
 //                      (Box2D b2_baumgarte)                                          [-]
 //   maxCorrection      most a position iteration moves a point (b2_maxLinearCorrection) [m]
+//   positionTolerance  the position iterations stop when no point is deeper than this
+//                      (Box2D: 3 slop; here the slop itself, see docs/collisions.md)  [m]
 //   convergence        the velocity iterations stop early when no accumulated impulse
 //                      changed by more than this in an iteration                     [N s]
 //   sleepLinear, sleepAngular   a body is at rest below these speeds (Box2D
@@ -27,6 +33,7 @@ namespace rbw {
 
 struct ManifoldSettings {
     int iterations = 10;
+    int normalSweeps = 3;
     bool sleep = true;
     PositionFix positionFix = PositionFix::Ngs;
     double margin = 0.02;
@@ -34,6 +41,7 @@ struct ManifoldSettings {
     double beta = 0.2;
     double maxCorrection = 0.2;
     int positionIterations = 3;
+    double positionTolerance = 0.005;
     int maxPoints = 8;   // points kept per box pair (of up to 8 clipped; box_box_clip.h)
     double convergence = 1e-9;
     double sleepLinear = 0.01;

@@ -181,7 +181,7 @@ void ManifoldContactStage::solve(StepContext& ctx)
         for (Manifold& m : w.manifolds) {
             SolverBody& A = w.bodies[static_cast<std::size_t>(m.a)];
             SolverBody& B = m.b >= 0 ? w.bodies[static_cast<std::size_t>(m.b)] : fixedBody;
-            largest = std::max(largest, solveManifoldVelocities(m, A, B));
+            largest = std::max(largest, solveManifoldVelocities(m, A, B, w.settings.normalSweeps));
         }
         w.iterationsUsed = it;
         if (largest <= w.settings.convergence) break;
