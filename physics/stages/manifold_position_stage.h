@@ -1,6 +1,7 @@
 // The manifold model's position fix, after the integration (contact_solver.h): with
-// "position_fix": "ngs" (the default) up to 4 non-linear Gauss-Seidel sweeps over this
-// step's manifold points move x and r of the overlapping bodies apart, leaving `slop`
+// "position_fix": "ngs" (the default) up to 3 non-linear Gauss-Seidel sweeps over this
+// step's manifold points (positionIterations, stopping once no point is deeper than the
+// slop) move x and r of the overlapping bodies apart, leaving `slop`
 // of overlap, and never touch v or L, so they add no kinetic energy (Box2D's
 // SolvePositionConstraints). With "baumgarte" or "none" nothing moves here. With a
 // trace it records each moved body's total correction and the deepest overlap left.
