@@ -35,6 +35,7 @@
 #include <QWebEnginePage>
 #include <QtTest>
 
+
 #include <mutex>
 
 using namespace rbw;
@@ -120,6 +121,7 @@ private slots:
     void showCodeOfAQuantity();
     void modelIsConsistent();
     void contactsGroupedByPair();
+    void valuesStayOnScreenWithLongGroupNames();
     void stepBackRestoresExactly();
     void plotsFollowTheCli();
     void dragPullsTheBox();
@@ -348,6 +350,52 @@ void TestApp::contactsGroupedByPair()
     const QModelIndex point = model.index(0, 0, facePair);
     QVERIFY(point.data().toString().startsWith(QLatin1String("contact ")));
     QVERIFY(findRow(&model, QStringLiteral("impulse"), point).isValid());
+}
+
+// Lesson 11 (manifold model) names each point's group with its pair, feature and
+// point ("contact 7 · stack-1 ↔ stack-2 · face-face (reference A) · point 3 of 4"),
+// far wider than a quantity's name. Sized to its contents, the Quantity column pushed
+// Before and After off the table at the default window size. The column is capped at
+// a third of the table (the full name is the group's tooltip), so the After column
+// starts on screen.
+void TestApp::valuesStayOnScreenWithLongGroupNames()
+{
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openLesson("11-resting-contact"));
+    auto* step = w.findChild<QAction*>("actionStep");
+    for (int k = 0; k < 12; ++k) step->trigger();
+    QCoreApplication::processEvents();
+    auto* view = w.findChild<QTreeView*>("traceView");
+    QVERIFY(view != nullptr);
+    const int width = view->viewport()->width();
+    // At least 40 px of the After column (its first digits) are on screen.
+    const int after = view->columnViewportPosition(TraceModel::ValueColumn);
+    QVERIFY2(after + 40 <= width, qPrintable(QStringLiteral("After starts at %1 of %2").arg(after).arg(width)));
+    // The control: sized to its contents, the Quantity column pushes After off screen.
+    const int capped = view->columnWidth(TraceModel::QuantityColumn);
+    view->resizeColumnToContents(TraceModel::QuantityColumn);
+    QVERIFY2(view->columnViewportPosition(TraceModel::ValueColumn) + 40 > width,
+             qPrintable(QStringLiteral("natural width %1 px").arg(view->columnWidth(TraceModel::QuantityColumn))));
+    view->setColumnWidth(TraceModel::QuantityColumn, capped);
+    // A group's whole label is its tooltip, for where it is elided.
+    const QModelIndex collisions = [&] {
+        for (int r = 0; r < w.traceModel()->rowCount(); ++r) {
+            const QModelIndex i = w.traceModel()->index(r, 0);
+            if (i.data().toString() == QLatin1String("Collisions")) return i;
+        }
+        return QModelIndex();
+    }();
+    QVERIFY(collisions.isValid());
+    QModelIndex pair;   // the first group under Collisions (a pair of bodies)
+    for (int r = 0; r < w.traceModel()->rowCount(collisions) && !pair.isValid(); ++r) {
+        const QModelIndex i = w.traceModel()->index(r, 0, collisions);
+        if (w.traceModel()->rowCount(i) > 0) pair = i;
+    }
+    QVERIFY(pair.isValid());
+    QVERIFY(!pair.data().toString().isEmpty());
+    QCOMPARE(pair.data(Qt::ToolTipRole).toString(), pair.data().toString());
 }
 
 void TestApp::stepBackRestoresExactly()

@@ -454,6 +454,12 @@ void MainWindow::createDocks()
             traceView_->resizeColumnToContents(c);
             // Long symbols (the J denominator terms) must not push the values off screen.
             if (c == TraceModel::SymbolColumn) traceView_->setColumnWidth(c, std::min(traceView_->columnWidth(c), 48));
+            // Nor long names (a manifold point's group: pair, feature, point k of n): at most
+            // a third of the table, elided, the whole name in the tooltip.
+            if (c == TraceModel::QuantityColumn) {
+                const int most = std::max(170, traceView_->viewport()->width() / 3);
+                traceView_->setColumnWidth(c, std::min(traceView_->columnWidth(c), most));
+            }
         }
     });
     formulaPane_ = new FormulaPane;

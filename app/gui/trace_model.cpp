@@ -260,7 +260,9 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const
     if (!index.isValid()) return {};
     const Node& n = nodes_[index.internalId()];
     if (n.entry < 0) {
-        if (role == Qt::DisplayRole && index.column() == QuantityColumn) return n.label;
+        // The whole label also as a tooltip: a long one (a contact's pair, feature and
+        // point) is elided where the Quantity column is capped (MainWindow).
+        if ((role == Qt::DisplayRole || role == Qt::ToolTipRole) && index.column() == QuantityColumn) return n.label;
         if (role == Qt::FontRole) {
             QFont f;
             f.setBold(true);
