@@ -12,14 +12,12 @@
 #include <QGraphicsLayout>
 #include <QCheckBox>
 #include <QHBoxLayout>
-#include <QImage>
 #include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QMenu>
 #include <QPainter>
 #include <QPixmap>
-#include <QSaveFile>
 #include <QTabWidget>
 #include <QTimer>
 #include <QToolButton>
@@ -35,7 +33,6 @@ namespace {
 
 // At most ~10 repaints per second, however fast the steps come.
 constexpr int kRefreshIntervalMs = 100;
-constexpr qreal kExportPixelRatio = 2.0;
 constexpr int kAxisTickCount = 5;
 
 // Colours: energy parts in distinct hues, components x, y, z in the usual red,
@@ -64,11 +61,6 @@ QIcon swatch(const QColor& colour)
     QPixmap pixmap(12, 12);
     pixmap.fill(colour);
     return QIcon(pixmap);
-}
-
-void setErrorText(QString* error, const QString& text)
-{
-    if (error != nullptr) *error = text;
 }
 
 } // namespace
@@ -451,42 +443,7 @@ bool PlotPanel::exportPng(const QString& path, QString* error)
 {
     refreshNow();
     ChartParts& parts = charts_[static_cast<std::size_t>(plotIndex(currentChart()))];
-    if (!parts.view->isVisible()) {
-        // Never laid out on screen (a closed dock): give the chart a sensible size.
-        parts.chart->resize(QSizeF(800, 500));
-    }
-    // Axis ticks and labels are laid out on a posted LayoutRequest: do it now, so
-    // the image shows the axes as they are, not as they were one event ago.
-    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-    parts.chart->layout()->activate();
-    const QSize logical = exportLogicalSize();
-    if (logical.width() < 10 || logical.height() < 10) {
-        setErrorText(error, QStringLiteral("cannot export %1: the chart has no size yet").arg(path));
-        return false;
-    }
-
-    // Render the chart's scene at twice the resolution, on white.
-    QImage image(logical * kExportPixelRatio, QImage::Format_ARGB32_Premultiplied);
-    image.setDevicePixelRatio(kExportPixelRatio);
-    image.fill(Qt::white);
-    {
-        QPainter painter(&image);
-        painter.setRenderHint(QPainter::Antialiasing);
-        painter.setRenderHint(QPainter::TextAntialiasing);
-        const QRectF source = parts.chart->mapRectToScene(QRectF(QPointF(0, 0), parts.chart->size()));
-        parts.chart->scene()->render(&painter, QRectF(QPointF(0, 0), QSizeF(logical)), source);
-    }
-
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        setErrorText(error, QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
-        return false;
-    }
-    if (!image.save(&file, "PNG") || !file.commit()) {
-        setErrorText(error, QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
-        return false;
-    }
-    return true;
+    return writeChartPng(parts.chart, parts.view->isVisible(), path, error);
 }
 
 bool PlotPanel::exportCsv(const QString& path, QString* error)

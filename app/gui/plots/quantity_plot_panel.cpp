@@ -13,8 +13,6 @@
 #include <QCoreApplication>
 #include <QGraphicsLayout>
 #include <QHBoxLayout>
-#include <QBuffer>
-#include <QImage>
 #include <QLabel>
 #include <QLegend>
 #include <QLineSeries>
@@ -34,15 +32,9 @@ namespace rbw {
 namespace {
 
 constexpr int kRefreshIntervalMs = 100;
-constexpr qreal kExportPixelRatio = 2.0;
 constexpr int kAxisTickCount = 5;
 
 const Qt::PenStyle kComponentStyles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine};
-
-void setError(QString* error, const QString& text)
-{
-    if (error != nullptr) *error = text;
-}
 
 // Applies a wanted range to an axis with nice numbers and labels that fit.
 void applyRange(QValueAxis* axis, const ValueRange& wanted, const QRectF& area)
@@ -293,34 +285,7 @@ bool QuantityPlot::exportCsv(const QString& path, QString* error) const
 bool QuantityPlot::exportPng(const QString& path, QString* error)
 {
     refresh();
-    if (!view_->isVisible()) chart_->resize(QSizeF(800, 500));
-    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-    chart_->layout()->activate();
-    const QSize logical = chart_->size().toSize();
-    if (logical.width() < 10 || logical.height() < 10) {
-        setError(error, QStringLiteral("cannot export %1: the chart has no size yet").arg(path));
-        return false;
-    }
-    QImage image(logical * kExportPixelRatio, QImage::Format_ARGB32_Premultiplied);
-    image.setDevicePixelRatio(kExportPixelRatio);
-    image.fill(Qt::white);
-    {
-        QPainter painter(&image);
-        painter.setRenderHint(QPainter::Antialiasing);
-        painter.setRenderHint(QPainter::TextAntialiasing);
-        const QRectF source = chart_->mapRectToScene(QRectF(QPointF(0, 0), chart_->size()));
-        chart_->scene()->render(&painter, QRectF(QPointF(0, 0), QSizeF(logical)), source);
-    }
-    QByteArray bytes;
-    {
-        QBuffer buffer(&bytes);
-        buffer.open(QIODevice::WriteOnly);
-        if (!image.save(&buffer, "PNG")) {
-            setError(error, QStringLiteral("cannot encode %1 as PNG").arg(path));
-            return false;
-        }
-    }
-    return writeFileAtomically(path, bytes, error);
+    return writeChartPng(chart_, view_->isVisible(), path, error);
 }
 
 void QuantityPlot::exportPngInteractive()
