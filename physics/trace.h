@@ -68,6 +68,14 @@ std::string_view sourceFile(const TraceEntry& e);
 unsigned sourceLine(const TraceEntry& e);
 std::string sourceText(const TraceEntry& e);
 
+// One velocity iteration of the manifold model at a contact point: the accumulated
+// impulses after it (contact_solver.h). The last equals the contact's normal_impulse and
+// tangent_impulse entries; the first iteration starts from the warm-start values.
+struct ImpulseIterate {
+    double lambda_n = 0.0;              // [N s]
+    Vec3 lambda_t_W = Vec3::Zero();     // lambda_t1 t1 + lambda_t2 t2, world frame [N s]
+};
+
 // What a contact is, beside its numbers (which are entries of Stage::Collision whose
 // index is the contact's number).
 struct ContactHeader {
@@ -78,6 +86,7 @@ struct ContactHeader {
     const char* resolution = "";   // "single-point" (SAT), "per-point" or "average" (planes)
     int pointCount = 1;        // corners averaged into this contact ("average")
     bool separating = false;   // v_rel . n > 0: no impulse was applied
+    std::vector<ImpulseIterate> iterations;   // manifold model: after each iteration, in order
 };
 
 // A probe point read at the start of the step: p = x + R p_B, v_p = v + omega x (p - x).

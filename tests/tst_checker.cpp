@@ -189,7 +189,7 @@ private slots:
         StepUnderTest s = stepOf("03-two-box-collision/scene.json", 2);
         rbw::StepTrace t;
         t.step = 2;
-        t.contacts.push_back(rbw::ContactHeader{0, 1, -1, "vertex-face", "single-point", 1, false});
+        t.contacts.push_back(rbw::ContactHeader{0, 1, -1, "vertex-face", "single-point", 1, false, {}});
         t.add(rbw::q::velocity_a, 0, Vec3(10.0123, 0, 0), 0);
         t.add(rbw::q::velocity_b, 1, Vec3(10, 0, 0), 0);
         t.add(rbw::q::relative_velocity, 0, Vec3(0.0123, 0, 0), 0);

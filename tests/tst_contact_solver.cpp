@@ -158,6 +158,66 @@ private slots:
         QCOMPARE(k, std::size_t(4));
     }
 
+    // The trace keeps every manifold point's accumulated impulses after each velocity
+    // iteration (ContactHeader::iterations). Invariants: one entry per iteration the
+    // solver ran (solver_iterations); the last is the point's normal_impulse and
+    // tangent_impulse entries; after every iteration lambda_n >= 0 and the friction is
+    // inside the cone, |lambda_t| <= mu lambda_n (the clamp is on the accumulated
+    // impulse, so it holds after each iteration, not only at the end). A box sliding at
+    // 2 m/s (mu = 0.3) needs several iterations, and its impulses change between them:
+    // the history is not the final value repeated. The course model solves no iterations:
+    // its contacts have none (the control).
+    void iterationHistoryIsTraced_data()
+    {
+        QTest::addColumn<int>("iterations");
+        QTest::addColumn<bool>("manifold");
+        QTest::newRow("up to 200 iterations") << 200 << true;
+        QTest::newRow("1 iteration") << 1 << true;
+        QTest::newRow("course model (control)") << 10 << false;
+    }
+
+    void iterationHistoryIsTraced()
+    {
+        QFETCH(int, iterations);
+        QFETCH(bool, manifold);
+        const double mu = 0.3;
+        SceneDef s = groundScene(mu, false);
+        s.solverIterations = iterations;
+        if (!manifold) {
+            s.contactModel = rbw::ContactModel::Course;
+            s.sleep = std::nullopt;
+            s.solverIterations = std::nullopt;
+        }
+        addBox(s, Vec3(0.0, 0.5, 0.0), Vec3(2.0, -0.5, 0.0));
+        World w(s);
+        rbw::StepTrace t;
+        w.step(&t);
+        QVERIFY(!t.contacts.empty());
+        if (!manifold) {
+            for (const rbw::ContactHeader& c : t.contacts) QVERIFY(c.iterations.empty());
+            return;
+        }
+        const double used = scalar(t, "solver_iterations");
+        QVERIFY(used >= 1.0 && used <= iterations);
+        if (iterations > 1) QVERIFY2(used > 1.0, qPrintable(QString::number(used)));
+        bool changed = false;
+        for (int k = 0; k < static_cast<int>(t.contacts.size()); ++k) {
+            const std::vector<rbw::ImpulseIterate>& history = t.contacts[static_cast<std::size_t>(k)].iterations;
+            QCOMPARE(double(history.size()), used);
+            for (const rbw::ImpulseIterate& it : history) {
+                QVERIFY(it.lambda_n >= 0.0);
+                QVERIFY(it.lambda_t_W.norm() <= mu * it.lambda_n * (1.0 + 1e-12) + 1e-15);
+            }
+            const rbw::TraceEntry* lambdaN = t.find("normal_impulse", 0, k);
+            const rbw::TraceEntry* lambdaT = t.find("tangent_impulse", 0, k);
+            QVERIFY(lambdaN != nullptr && lambdaT != nullptr);
+            QCOMPARE(history.back().lambda_n, std::get<double>(lambdaN->value));
+            QVERIFY(history.back().lambda_t_W == std::get<Vec3>(lambdaT->value));
+            changed = changed || history.front().lambda_n != history.back().lambda_n;
+        }
+        QCOMPARE(changed, iterations > 1);
+    }
+
     // A box at rest sleeps once it has rested timeToSleep = 0.5 s (30 steps), and stays
     // exactly still; a push wakes it. "sleep": false is the control.
     void sleepAndWake_data()
@@ -312,7 +372,7 @@ private slots:
     // and omega = 0. One cold velocity iteration with one sweep over the normal rows
     // (Gauss-Seidel, point by point) ends 25 % off with the box turning at 0.065 rad/s
     // (the control: the check can fail); each sweep over the coupled rows (K,
-    // prepareManifold) cuts the error about sevenfold, so 3 sweeps must be within 1 %
+    // ContactSolver::prepare) cuts the error about sevenfold, so 3 sweeps must be within 1 %
     // and 5 mrad/s, and 8 sweeps are too.
     void normalSweepsSolveTheManifoldTogether_data()
     {
@@ -333,16 +393,21 @@ private slots:
         QVERIFY(rbw::collideBoxPlaneManifold(box, ground, 0.02, m));
         QCOMPARE(m.count, 4);
         m.mu = 0.0;
-        rbw::SolverBody A;
+        m.a = 0;
+        std::vector<rbw::Manifold> manifolds{m};
+        std::vector<rbw::SolverBody> bodies(2);     // the box, and the ground's static body
+        rbw::SolverBody& A = bodies[0];
         A.invM = 1.0;
         A.Iinv_W = rbw::Mat3::Identity() * 6.0;   // I0 = M/6 E for a unit cube
         A.v_W = Vec3(0.0, -kG * kH, 0.0);
-        rbw::SolverBody ground_body;               // static: zero inverse mass
-        rbw::BodyState start;
-        start.x_W = box.c_W;
+        std::vector<rbw::BodyState> start(1);
+        start[0].x_W = box.c_W;
         rbw::ManifoldSettings settings;
-        rbw::prepareManifold(m, A, ground_body, box.c_W, Vec3::Zero(), start, nullptr, settings, kH, 1.0);
-        rbw::solveManifoldVelocities(m, A, ground_body, sweeps);
+        rbw::ContactSolver solver;
+        solver.prepare(manifolds, bodies, 1, start, settings, kH, 1.0);
+        solver.iterate(bodies, sweeps);
+        solver.finish(manifolds, bodies);
+        m = manifolds[0];
         const double expected = kG * kH / 4.0;
         double worst = 0.0;
         for (int k = 0; k < m.count; ++k) {

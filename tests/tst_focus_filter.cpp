@@ -41,11 +41,11 @@ StepTrace handTrace()
     t.add(kPosition, 1, Vec3(1, 0, 0));
     t.add(kPosition, 2, Vec3(2, 0, 0));
     t.add(kPairsTested, -1, 3.0);
-    t.contacts.push_back(ContactHeader{0, 2, -1, "vertex-face", "single-point", 1, false});
+    t.contacts.push_back(ContactHeader{0, 2, -1, "vertex-face", "single-point", 1, false, {}});
     t.add(kImpulse, 0, 1.5, 0);
-    t.contacts.push_back(ContactHeader{1, -1, 0, "vertex-plane", "average", 4, false});
+    t.contacts.push_back(ContactHeader{1, -1, 0, "vertex-plane", "average", 4, false, {}});
     t.add(kImpulse, 1, 2.5, 1);
-    t.contacts.push_back(ContactHeader{1, 2, -1, "edge-edge", "single-point", 1, false});
+    t.contacts.push_back(ContactHeader{1, 2, -1, "edge-edge", "single-point", 1, false, {}});
     t.add(kImpulse, 1, 3.5, 2);
     t.add(kCorrection, 2, Vec3(0, 0.01, 0), 0);
     t.add(kProbe, 1, Vec3(0, 1, 0), 0);

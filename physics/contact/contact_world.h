@@ -23,6 +23,7 @@ struct ContactWorld {
     ManifoldCache cache;               // last step's impulses by pair and feature id
     SleepState sleep;
     std::vector<SolverBody> bodies;    // one per body, and a last, static one for planes
+    ContactSolver solver;              // this step's rows, impulses and iteration history
     int iterationsUsed = 0;            // velocity iterations of the last step
     // Broad-phase scratch
     AabbTree broadPhase;

@@ -37,15 +37,9 @@ struct ManifoldPoint {
     Vec3 pB_B = Vec3::Zero();
     double separation = 0.0;
     std::uint32_t feature = 0;
-    // Solver (contact_solver.cpp)
+    // Solver (contact_solver.cpp, ContactSolver::prepare and store)
     Vec3 r_A_W = Vec3::Zero();
     Vec3 r_B_W = Vec3::Zero();
-    // The angular parts of the three rows (n, t1, t2), computed once per step:
-    // r_A x d and I_A^-1 (r_A x d), the same for B (contact_solver.cpp).
-    std::array<Vec3, 3> rAxd_W = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    std::array<Vec3, 3> rBxd_W = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    std::array<Vec3, 3> IArAxd_W = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    std::array<Vec3, 3> IBrBxd_W = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
     double normalVelocity = 0.0;   // v_n at the start of the step
     double m_n = 0.0, m_t1 = 0.0, m_t2 = 0.0;
     double v_target = 0.0;
@@ -71,10 +65,6 @@ struct Manifold {
     double restitution = 0.0;
     int count = 0;
     std::array<ManifoldPoint, kMaxManifoldPoints> points{};
-    // The coupling of the normal rows through the two bodies (contact_solver.cpp,
-    // prepareManifold): K_n[i][j], the change of v_n at point i per unit normal impulse
-    // at point j [1/kg]; K_n[i][i] = 1/m_n.
-    std::array<std::array<double, kMaxManifoldPoints>, kMaxManifoldPoints> K_n{};
     std::source_location where;   // the narrow-phase statement that computed the points
 
     // The key that identifies the pair across steps: (a, b) for two bodies, (a, plane)

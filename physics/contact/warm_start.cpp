@@ -73,7 +73,7 @@ int ManifoldCache::warmStart(Manifold& m) const
             }
         }
         // lambda_n = lambda_n^0 (the friction's lambda_t^0 is put on the tangents that
-        // prepareManifold chooses)
+        // ContactSolver::prepare chooses)
         p.lambda_n = p.warm_n;
         p.lambda_t1 = 0.0;
         p.lambda_t2 = 0.0;

@@ -53,7 +53,7 @@ void resolveContact(StepContext& ctx, const ContactGeometry& g, int a, int b, in
     if (ctx.trace != nullptr) {
         // What the contact is; its numbers follow as entries with index k.
         ctx.trace->contacts.push_back(
-            ContactHeader{a, b, plane, featureName(g.feature), resolution, pointCount, false});
+            ContactHeader{a, b, plane, featureName(g.feature), resolution, pointCount, false, {}});
         // p, n and d as the narrow phase computed them (g.where: its statement)
         ctx.trace->add(q::contact_point, a, g.p_W, k, g.where);
         ctx.trace->add(q::contact_normal, a, g.n_W, k, g.where);

@@ -164,34 +164,19 @@ void ManifoldContactStage::solve(StepContext& ctx)
         sb.v_W = s.v_W + (h * mp.invM) * load.F_W;
         sb.omega_W = s.omega_W + h * (s.Iinv_W * load.q_W);
     }
-    SolverBody& fixedBody = w.bodies[static_cast<std::size_t>(n)];
-    for (Manifold& m : w.manifolds) {
-        SolverBody& A = w.bodies[static_cast<std::size_t>(m.a)];
-        SolverBody& B = m.b >= 0 ? w.bodies[static_cast<std::size_t>(m.b)] : fixedBody;
-        const BodyState& sA = ctx.states[static_cast<std::size_t>(m.a)];
-        const BodyState* sB = m.b >= 0 ? &ctx.states[static_cast<std::size_t>(m.b)] : nullptr;
-        prepareManifold(m, A, B, sA.x_W, sB != nullptr ? sB->x_W : Vec3::Zero(), sA, sB, w.settings, h,
-                        ctx.scene.restitutionThreshold);
-    }
+    w.solver.prepare(w.manifolds, w.bodies, n, ctx.states, w.settings, h, ctx.scene.restitutionThreshold);
     // Sequential impulses: up to solver_iterations sweeps, stopping when no accumulated
-    // impulse changed by more than the convergence tolerance in a sweep.
+    // impulse changed by more than the convergence tolerance in a sweep. With a trace,
+    // every point's impulses after each iteration are kept (recordPoints).
     w.iterationsUsed = 0;
     for (int it = 1; it <= w.settings.iterations && !w.manifolds.empty(); ++it) {
-        double largest = 0.0;
-        for (Manifold& m : w.manifolds) {
-            SolverBody& A = w.bodies[static_cast<std::size_t>(m.a)];
-            SolverBody& B = m.b >= 0 ? w.bodies[static_cast<std::size_t>(m.b)] : fixedBody;
-            largest = std::max(largest, solveManifoldVelocities(m, A, B, w.settings.normalSweeps));
-        }
+        const double largest = w.solver.iterate(w.bodies, w.settings.normalSweeps);
+        if (ctx.trace != nullptr) w.solver.recordIterate();
         w.iterationsUsed = it;
         if (largest <= w.settings.convergence) break;
     }
+    w.solver.finish(w.manifolds, w.bodies);
     record(ctx.trace, q::solver_iterations_used, -1, double(w.iterationsUsed));
-    for (const Manifold& m : w.manifolds) {
-        SolverBody& A = w.bodies[static_cast<std::size_t>(m.a)];
-        SolverBody& B = m.b >= 0 ? w.bodies[static_cast<std::size_t>(m.b)] : fixedBody;
-        accumulateImpulses(m, A, B);
-    }
     // The impulses become loads of the integration: F_c = P / h, q_c = L_c / h.
     for (int b = 0; b < n; ++b) {
         if (!ctx.movable[static_cast<std::size_t>(b)]) continue;
@@ -230,16 +215,30 @@ void ManifoldContactStage::recordPoints(StepContext& ctx) const
         for (int k = 0; k < m.count; ++k) {
             const ManifoldPoint& p = m.points[static_cast<std::size_t>(k)];
             const int i = ctx.scratch.contactCount++;
-            ++points;
-            ctx.trace->contacts.push_back(
-                ContactHeader{m.a, m.b, m.plane, m.featureName(), "manifold", m.count, p.lambda_n == 0.0});
+            ContactHeader& header = ctx.trace->contacts.emplace_back();
+            header.bodyA = m.a;
+            header.bodyB = m.b;
+            header.plane = m.plane;
+            header.feature = m.featureName();
+            header.resolution = "manifold";
+            header.pointCount = m.count;
+            header.separating = p.lambda_n == 0.0;
+            // The accumulated impulses after each velocity iteration (the solver's
+            // history, ContactSolver::recordIterate), lambda_t = lambda_t1 t1 + lambda_t2 t2
+            const std::vector<PointImpulses>& history = w.solver.history();
+            const std::size_t stride = static_cast<std::size_t>(w.solver.pointCount());
+            for (std::size_t it = 0; stride > 0 && (it + 1) * stride <= history.size(); ++it) {
+                const PointImpulses& iterate = history[it * stride + static_cast<std::size_t>(points)];
+                header.iterations.push_back(
+                    ImpulseIterate{iterate.lambda_n, iterate.lambda_t1 * m.t1_W + iterate.lambda_t2 * m.t2_W});
+            }
             // p, n, d and the feature id as the narrow phase computed them (m.where)
             ctx.trace->add(q::manifold_point, m.a, p.p_W, i, m.where);
             ctx.trace->add(q::manifold_normal, m.a, m.n_W, i, m.where);
             ctx.trace->add(q::manifold_depth, m.a, -p.separation, i, m.where);
             ctx.trace->add(q::feature_id, m.a, double(p.feature), i, m.where);
-            // The solver's numbers (contact_solver.cpp: prepareManifold, warmStart,
-            // solveManifoldVelocities), accumulated over the iterations.
+            // The solver's numbers (contact_solver.cpp: ContactSolver::prepare, warmStart,
+            // ContactSolver::iterate), accumulated over the iterations.
             record(ctx.trace, q::manifold_normal_velocity, m.a, p.normalVelocity, i);
             const QuantityInfo& target = w.settings.positionFix == PositionFix::Baumgarte
                                              ? q::target_normal_velocity_baumgarte
@@ -252,6 +251,7 @@ void ManifoldContactStage::recordPoints(StepContext& ctx) const
             // lambda_t = lambda_t1 t1 + lambda_t2 t2
             const Vec3 lambda_t_W = p.lambda_t1 * m.t1_W + p.lambda_t2 * m.t2_W;
             record(ctx.trace, q::tangent_impulse, m.a, lambda_t_W, i);
+            ++points;
         }
     }
     record(ctx.trace, q::manifold_points, -1, double(points));

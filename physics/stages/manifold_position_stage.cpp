@@ -1,5 +1,6 @@
 #include "physics/stages/manifold_position_stage.h"
 
+#include "physics/contact/position_fix.h"
 #include "physics/quantities.h"
 
 #include <algorithm>
@@ -27,23 +28,17 @@ void ManifoldPositionStage::run(StepContext& ctx)
     if (w.settings.positionFix == PositionFix::Ngs && !w.manifolds.empty()) {
         dx_W_.assign(static_cast<std::size_t>(n), Vec3::Zero());
         moved_.assign(static_cast<std::size_t>(n), 0);
+        angular_.resize(static_cast<std::size_t>(n));
+        for (int b = 0; b < n; ++b) {
+            angular_[static_cast<std::size_t>(b)] = ctx.scene.bodies[static_cast<std::size_t>(b)].angularResponse ? 1 : 0;
+        }
+        for (const Manifold& m : w.manifolds) {
+            moved_[static_cast<std::size_t>(m.a)] = 1;
+            if (m.b >= 0) moved_[static_cast<std::size_t>(m.b)] = 1;
+        }
+        ngs_.prepare(w.manifolds, ctx.mass, angular_);
         for (int it = 0; it < w.settings.positionIterations; ++it) {
-            double smallest = 0.0;
-            for (const Manifold& m : w.manifolds) {
-                BodyState& A = ctx.states[static_cast<std::size_t>(m.a)];
-                BodyState* B = m.b >= 0 ? &ctx.states[static_cast<std::size_t>(m.b)] : nullptr;
-                const MassProperties* massB = m.b >= 0 ? &ctx.mass[static_cast<std::size_t>(m.b)] : nullptr;
-                const bool angularA = ctx.scene.bodies[static_cast<std::size_t>(m.a)].angularResponse;
-                const bool angularB = m.b >= 0 && ctx.scene.bodies[static_cast<std::size_t>(m.b)].angularResponse;
-                Vec3 unused_W = Vec3::Zero();
-                Vec3& dxB_W = m.b >= 0 ? dx_W_[static_cast<std::size_t>(m.b)] : unused_W;
-                const double s = solveManifoldPositions(m, A, ctx.mass[static_cast<std::size_t>(m.a)], angularA, B,
-                                                        massB, angularB, w.settings,
-                                                        dx_W_[static_cast<std::size_t>(m.a)], dxB_W);
-                smallest = std::min(smallest, s);
-                moved_[static_cast<std::size_t>(m.a)] = 1;
-                if (m.b >= 0) moved_[static_cast<std::size_t>(m.b)] = 1;
-            }
+            const double smallest = ngs_.iterate(ctx.states, w.settings, dx_W_);
             // Done when no point overlaps by more than the position tolerance (the slop
             // the fix leaves; Box2D stops at 3 slop, 1.5 cm, which left 1.4 cm overlaps
             // in a 1000-box pile: docs/performance.md, "Contacts: the box rain").

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "physics/contact/contact_world.h"
+#include "physics/contact/position_fix.h"
 #include "physics/stages/stage.h"
 
 #include <memory>
@@ -22,8 +23,10 @@ public:
 
 private:
     std::shared_ptr<ContactWorld> world_;
+    NgsSolver ngs_;               // this step's manifolds as the iterations read them
     std::vector<Vec3> dx_W_;      // per body: its correction in this step
     std::vector<char> moved_;     // per body: corrected in this step
+    std::vector<char> angular_;   // per body: contacts turn it (angular response)
 };
 
 // The deepest overlap among the manifold points at the bodies' current poses:
