@@ -56,6 +56,46 @@ private slots:
         }
         QVERIFY(withContacts >= 2);
     }
+
+    // @iterations writes a manifold point's impulses after each velocity iteration: in
+    // the manifold model one table per point with one row per iteration the solver ran
+    // (solver_iterations) and a warm-start row; nothing in the course model (the
+    // control). Outside a contact loop it is an error that names the line.
+    void iterationTable_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<bool>("tables");
+        QTest::newRow("manifold") << "scene.json" << true;
+        QTest::newRow("course (control)") << "course.json" << false;
+    }
+
+    void iterationTable()
+    {
+        QFETCH(QString, file);
+        QFETCH(bool, tables);
+        const rbw::SceneDef scene = load(file);
+        rbw::World w(scene);
+        rbw::StepTrace t;
+        for (int k = 0; k < 90 && t.contacts.empty(); ++k) QVERIFY(w.step(&t).ok);
+        QVERIFY(!t.contacts.empty());
+        const rbw::DerivationDocument doc = rbw::buildLessonDerivation(t, scene, kLesson);
+        QVERIFY2(doc.errors.isEmpty(), qPrintable(doc.errors.join('\n')));
+        const int warmRows = static_cast<int>(doc.html.count(QStringLiteral("\\text{(warm start)}")));
+        QCOMPARE(warmRows, tables ? static_cast<int>(t.contacts.size()) : 0);
+        if (tables) {
+            // iterations 1 .. n in every table: "n &" opens the last row
+            const rbw::TraceEntry* used = t.find("solver_iterations", -1);
+            QVERIFY(used != nullptr);
+            const int n = static_cast<int>(std::get<double>(used->value));
+            QVERIFY(n >= 1);
+            QCOMPARE(static_cast<int>(doc.html.count(QStringLiteral("\\\\ %1 &amp; ").arg(n))), warmRows);
+        }
+        // Misuse: @iterations outside @foreach contact
+        const rbw::DerivationDocument wrong = rbw::buildDerivation(t, scene, QStringLiteral("# x\n@iterations\n"),
+                                                                   QStringLiteral("wrong.md"));
+        QVERIFY2(wrong.errors.join('\n').contains(QStringLiteral("wrong.md:2: @iterations needs a contact")),
+                 qPrintable(wrong.errors.join('\n')));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestContactLesson)

@@ -7,6 +7,9 @@
 #include "app/core/scene_loader.h"
 #include "physics/world.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QtTest>
 
 namespace {
@@ -146,6 +149,53 @@ private slots:
         QVERIFY(t.find("contact_force", 0) != nullptr);
         QVERIFY(t.find("sleep_time", 0) != nullptr);
         QVERIFY(t.find("asleep", 0) != nullptr);
+    }
+
+    // `rbw run --format json` writes each manifold contact's impulses after every
+    // velocity iteration ("iterations"): as many as the step's solver_iterations, the
+    // last equal to the contact's normal_impulse and tangent_impulse. The course model's
+    // contacts have none (the control).
+    void jsonIterations_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<bool>("manifold");
+        QTest::newRow("manifold") << "scene.json" << true;
+        QTest::newRow("course (control)") << "course.json" << false;
+    }
+
+    void jsonIterations()
+    {
+        QFETCH(QString, file);
+        QFETCH(bool, manifold);
+        const rbw::test::RbwRun run = rbw::test::runRbw(
+            {QStringLiteral("run"), QStringLiteral(RBW_SOURCE_DIR "/lessons/11-resting-contact/") + file,
+             QStringLiteral("--trace"), QStringLiteral("all"), QStringLiteral("--steps"), QStringLiteral("40"),
+             QStringLiteral("--format"), QStringLiteral("json")});
+        QCOMPARE(run.exitCode, 0);
+        int contacts = 0;
+        for (const QJsonValue& stepValue : QJsonDocument::fromJson(run.out).object().value(QStringLiteral("trace")).toArray()) {
+            const QJsonObject step = stepValue.toObject();
+            double used = -1.0;
+            for (const QJsonValue& q : step.value(QStringLiteral("quantities")).toArray()) {
+                if (q.toObject().value(QStringLiteral("id")).toString() == QLatin1String("solver_iterations")) {
+                    used = q.toObject().value(QStringLiteral("value")).toDouble();
+                }
+            }
+            for (const QJsonValue& cValue : step.value(QStringLiteral("contacts")).toArray()) {
+                const QJsonObject c = cValue.toObject();
+                ++contacts;
+                QCOMPARE(c.contains(QStringLiteral("iterations")), manifold);
+                if (!manifold) continue;
+                const QJsonArray iterations = c.value(QStringLiteral("iterations")).toArray();
+                QCOMPARE(double(iterations.size()), used);
+                const QJsonObject last = iterations.last().toObject();
+                QCOMPARE(last.value(QStringLiteral("normal_impulse")).toDouble(),
+                         c.value(QStringLiteral("normal_impulse")).toDouble());
+                QCOMPARE(last.value(QStringLiteral("tangent_impulse")).toArray(),
+                         c.value(QStringLiteral("tangent_impulse")).toArray());
+            }
+        }
+        QVERIFY(contacts > 0);
     }
 };
 

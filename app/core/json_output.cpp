@@ -100,6 +100,14 @@ QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene)
             }
         }
         contact.insert("sources", sources);
+        // iterations[]: the manifold solver's accumulated impulses after each iteration
+        if (!c.iterations.empty()) {
+            QJsonArray iterations;
+            for (const ImpulseIterate& it : c.iterations) {
+                iterations.append(QJsonObject{{"normal_impulse", it.lambda_n}, {"tangent_impulse", jsonVec3(it.lambda_t_W)}});
+            }
+            contact.insert("iterations", iterations);
+        }
         contacts.append(contact);
     }
     // start: the state the step started from (StepTrace::start), per body and probe.

@@ -231,10 +231,11 @@ TemplateParseResult parseDerivationTemplate(const QString& text, const QString& 
                 n.text = arg;
                 n.negate = word == QLatin1String("@ifnot");
                 stack.push_back(OpenBlock{n, false});
-            } else if (word == QLatin1String("@integration")) {
-                if (!arg.isEmpty()) result.errors << where + QStringLiteral("@integration takes no argument");
+            } else if (word == QLatin1String("@integration") || word == QLatin1String("@iterations")) {
+                if (!arg.isEmpty()) result.errors << where + QStringLiteral("%1 takes no argument").arg(word);
                 TemplateNode n;
-                n.kind = TemplateNode::Kind::Integration;
+                n.kind = word == QLatin1String("@integration") ? TemplateNode::Kind::Integration
+                                                               : TemplateNode::Kind::Iterations;
                 n.line = lineNo;
                 target().push_back(std::move(n));
             } else if (word == QLatin1String("@else")) {
@@ -255,7 +256,7 @@ TemplateParseResult parseDerivationTemplate(const QString& text, const QString& 
                     target().push_back(std::move(done));
                 }
             } else {
-                result.errors << where + QStringLiteral("unknown directive '%1' (@foreach, @body, @if, @ifnot, @else, @end, @integration)").arg(word);
+                result.errors << where + QStringLiteral("unknown directive '%1' (@foreach, @body, @if, @ifnot, @else, @end, @integration, @iterations)").arg(word);
             }
             continue;
         }

@@ -8,6 +8,8 @@
 //   @body NAME ... @end           @if COND ... [@else ...] @end   (@ifnot COND)
 //   @integration                  the current body's integrator's own section
 //                                 (integrator_sections.h), expanded in place
+//   @iterations                   in a contact loop: the manifold solver's impulses
+//                                 after each iteration (ContactHeader::iterations)
 //   <!-- comment -->              on one line, ignored
 //
 // Placeholders {{...}} inside any text are checked here (syntax, known ids) and
@@ -32,7 +34,7 @@ struct Placeholder {
 };
 
 struct TemplateNode {
-    enum class Kind { Heading, Paragraph, List, DisplayMath, Row, Loop, Body, If, Integration };
+    enum class Kind { Heading, Paragraph, List, DisplayMath, Row, Loop, Body, If, Integration, Iterations };
     Kind kind = Kind::Paragraph;
     int line = 0;          // 1-based line in the template file
     int level = 0;         // heading level 1-3
