@@ -37,7 +37,7 @@ struct ManifoldPoint {
     Vec3 pB_B = Vec3::Zero();
     double separation = 0.0;
     std::uint32_t feature = 0;
-    // Solver (contact_solver.cpp, ContactSolver::prepare and store)
+    // Solver (contact_solver.cpp, ContactSolver::prepare and finish; for the trace)
     Vec3 r_A_W = Vec3::Zero();
     Vec3 r_B_W = Vec3::Zero();
     double normalVelocity = 0.0;   // v_n at the start of the step

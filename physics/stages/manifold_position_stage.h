@@ -1,4 +1,4 @@
-// The manifold model's position fix, after the integration (contact_solver.h): with
+// The manifold model's position fix, after the integration (contact/position_fix.h): with
 // "position_fix": "ngs" (the default) up to 3 non-linear Gauss-Seidel sweeps over this
 // step's manifold points (positionIterations, stopping once no point is deeper than the
 // slop) move x and r of the overlapping bodies apart, leaving `slop`
