@@ -74,6 +74,13 @@ QString numberLatex(double x, int digits)
     return formatNumber(x, digits);
 }
 
+// Component i of v with round-off chopped as latexValue does: below 1e-12 of the
+// largest entry is 0.
+double choppedComponent(const Vec3& v, int i)
+{
+    return std::abs(v[i]) < 1e-12 * v.cwiseAbs().maxCoeff() ? 0.0 : v[i];
+}
+
 // Components and transposes are formatting of a traced value, not new physics.
 QString selectLatex(const TraceValue& value, const QString& selector, int digits, QString* problem)
 {
@@ -92,9 +99,7 @@ QString selectLatex(const TraceValue& value, const QString& selector, int digits
         return QString();
     }
     const int i = selector == QLatin1String("x") ? 0 : selector == QLatin1String("y") ? 1 : 2;
-    // Chop round-off as latexValue does: below 1e-12 of the largest entry is 0.
-    const double c = std::abs((*v)[i]) < 1e-12 * v->cwiseAbs().maxCoeff() ? 0.0 : (*v)[i];
-    return numberLatex(c, digits);
+    return numberLatex(choppedComponent(*v, i), digits);
 }
 
 QString Expander::missing(const QString& shown, const QString& reason, int line, bool math)
@@ -563,10 +568,7 @@ QString Expander::iterations(const TemplateNode& n, const Context& ctx)
     // (x, y, z) on one line, so that each iteration is one row of the table
     const auto tuple = [this](const Vec3& v) {
         QStringList parts;
-        for (const double c : traceValueComponents(TraceValue(v))) {
-            // round-off below 1e-12 of the largest component is 0, as latexValue does
-            parts << numberLatex(std::abs(c) < 1e-12 * v.cwiseAbs().maxCoeff() ? 0.0 : c, digits_);
-        }
+        for (int i = 0; i < 3; ++i) parts << numberLatex(choppedComponent(v, i), digits_);
         return QStringLiteral("(") + parts.join(QStringLiteral(",\\ ")) + QStringLiteral(")");
     };
     QString latex = QStringLiteral("\\begin{array}{r|r|l}\\text{iteration} & \\lambda_n\\ [\\mathrm{N\\,s}] & "
