@@ -15,10 +15,10 @@
 //   below     how far the lowest box corner is below the ground                 [m]
 // Results and machine: docs/performance.md, "Contacts: the box rain".
 // Run: ./build/bench/rbw_bench_contact   (about a minute)
-#include "physics/collision/box_box_sat.h"
-#include "physics/collision/broad_phase.h"
-#include "physics/scene.h"
-#include "physics/world.h"
+#include "physics/engine/course/box_box_sat.h"
+#include "physics/engine/collision/broad_phase.h"
+#include "physics/engine/scene.h"
+#include "physics/engine/world.h"
 
 #include <benchmark/benchmark.h>
 

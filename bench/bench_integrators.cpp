@@ -4,9 +4,9 @@
 // (it only clears the loads here), so the numbers are what a scene pays per body-step.
 // After the runs a table gives ns per body-step and the ratio to explicit Euler.
 // Results and machine: docs/integrators.md.
-#include "physics/integrator_registry.h"
-#include "physics/scene.h"
-#include "physics/world.h"
+#include "physics/engine/integrator_registry.h"
+#include "physics/engine/scene.h"
+#include "physics/engine/world.h"
 
 #include <benchmark/benchmark.h>
 

@@ -5,8 +5,8 @@
 //
 //   ./build/bench/rbw_bench_load
 //   /usr/bin/time -v ./build/bench/rbw_bench_load --benchmark_filter='bodies/100000'   # peak memory
-#include "app/core/scene_loader.h"
-#include "physics/world.h"
+#include "app/scene/scene_loader.h"
+#include "physics/engine/world.h"
 
 #include <benchmark/benchmark.h>
 

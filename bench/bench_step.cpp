@@ -1,8 +1,8 @@
 // Cost of one explicit Euler step, per body, with the trace off and on, and for a
 // world of many free bodies. Results and machine: docs/performance.md.
-#include "physics/scene.h"
-#include "physics/trace.h"
-#include "physics/world.h"
+#include "physics/engine/scene.h"
+#include "physics/engine/trace.h"
+#include "physics/engine/world.h"
 
 #include <benchmark/benchmark.h>
 

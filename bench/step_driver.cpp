@@ -4,8 +4,8 @@
 //   valgrind --tool=callgrind ./build/bench/rbw_step_driver 100000
 //   valgrind --tool=callgrind ./build/bench/rbw_step_driver 200000
 // The difference of the two totals over 100 000 is the instruction count of one step.
-#include "physics/scene.h"
-#include "physics/world.h"
+#include "physics/engine/scene.h"
+#include "physics/engine/world.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,10 +1,10 @@
 #include "fuzz/fuzz_scene.h"
 
-#include "app/core/csv_output.h"
-#include "app/core/json_output.h"
-#include "app/core/scene_loader.h"
-#include "physics/scene.h"
-#include "physics/world.h"
+#include "app/output/csv_output.h"
+#include "app/output/json_output.h"
+#include "app/scene/scene_loader.h"
+#include "physics/engine/scene.h"
+#include "physics/engine/world.h"
 
 #include <QBuffer>
 #include <QByteArray>

@@ -2,9 +2,9 @@
 // and run the rbw command line.
 #pragma once
 
-#include "app/core/scene_loader.h"
-#include "physics/collision/contact.h"
-#include "physics/trace.h"
+#include "app/scene/scene_loader.h"
+#include "physics/engine/collision/contact.h"
+#include "physics/engine/trace.h"
 
 #include <QList>
 #include <QProcess>

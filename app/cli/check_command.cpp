@@ -1,9 +1,9 @@
 #include "app/cli/check_command.h"
 
-#include "app/core/answers_file.h"
-#include "app/core/scene_loader.h"
-#include "physics/checker/checker.h"
-#include "physics/world.h"
+#include "app/exercise/answers_file.h"
+#include "app/scene/scene_loader.h"
+#include "physics/workbook/checker/checker.h"
+#include "physics/engine/world.h"
 
 #include <QFileInfo>
 #include <QJsonArray>

@@ -1,6 +1,6 @@
 // rbw check SCENE ANSWERS.json [ANSWERS2.json ...] [--step K] [--tolerance REL]
 //           [--format text|json|csv]
-// Checks a student's numbers for step K of a scene (physics/checker/checker.h) and
+// Checks a student's numbers for step K of a scene (physics/workbook/checker/checker.h) and
 // prints one result per answer: the verdict (correct, wrong, follows-from-earlier), the
 // workbook's number, the student's, the mistakes a wrong one shows and an explanation.
 // Several answer files give one CSV row per file and answer: a marking sheet.

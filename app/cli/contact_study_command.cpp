@@ -1,9 +1,9 @@
 #include "app/cli/contact_study_command.h"
 
-#include "app/core/answer_parser.h"
-#include "app/core/atomic_file.h"
-#include "app/core/study_csv.h"
-#include "physics/lab/contact_study.h"
+#include "app/exercise/answer_parser.h"
+#include "app/output/atomic_file.h"
+#include "app/output/study_csv.h"
+#include "physics/workbook/lab/contact_study.h"
 
 #include <QTextStream>
 

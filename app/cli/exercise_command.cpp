@@ -1,7 +1,7 @@
 #include "app/cli/exercise_command.h"
 
-#include "app/core/atomic_file.h"
-#include "app/core/exercise.h"
+#include "app/output/atomic_file.h"
+#include "app/exercise/exercise.h"
 
 #include <QFile>
 #include <QTextStream>

@@ -4,15 +4,15 @@
 #include "app/cli/check_command.h"
 #include "app/cli/contact_study_command.h"
 #include "app/cli/exercise_command.h"
-#include "app/core/csv_output.h"
-#include "app/core/json_output.h"
+#include "app/output/csv_output.h"
+#include "app/output/json_output.h"
 #include "app/core/lesson_catalogue.h"
-#include "app/core/scene_loader.h"
-#include "app/core/study_csv.h"
-#include "physics/integrator_registry.h"
-#include "physics/lab/study.h"
-#include "physics/quantity_catalogue.h"
-#include "physics/world.h"
+#include "app/scene/scene_loader.h"
+#include "app/output/study_csv.h"
+#include "physics/engine/integrator_registry.h"
+#include "physics/workbook/lab/study.h"
+#include "physics/engine/quantity_catalogue.h"
+#include "physics/engine/world.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -163,7 +163,7 @@ int runScene(const QCommandLineParser& parser, const QString& sceneFile)
 
 // rbw study SCENE [--integrators a,b] [--dt h1,h2] [--t-end T] [--output FILE]:
 // every integrator at every h against the scene's exact answer, as CSV
-// (physics/lab/study.h, app/core/study_csv.h). Progress goes to stderr.
+// (physics/workbook/lab/study.h, app/output/study_csv.h). Progress goes to stderr.
 int runStudyCommand(const QCommandLineParser& parser, const QString& sceneFile)
 {
     rbw::SceneLoadResult loaded = rbw::loadSceneFile(sceneFile);

@@ -8,7 +8,7 @@
 // doubles and indices are copied, never converted.
 #pragma once
 
-#include "physics/trace.h"
+#include "physics/engine/trace.h"
 
 #include <cstdint>
 #include <source_location>

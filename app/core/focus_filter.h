@@ -4,8 +4,8 @@
 // of a trace. A selection of the recorded entries: nothing is recomputed.
 #pragma once
 
-#include "physics/scene.h"
-#include "physics/trace.h"
+#include "physics/engine/scene.h"
+#include "physics/engine/trace.h"
 
 namespace rbw {
 

@@ -1,6 +1,6 @@
 #include "app/core/session.h"
 
-#include "physics/integrator_registry.h"
+#include "physics/engine/integrator_registry.h"
 
 #include <QElapsedTimer>
 

@@ -7,10 +7,10 @@
 #pragma once
 
 #include "app/core/step_history.h"
-#include "physics/interaction/mouse_spring.h"
-#include "physics/scene.h"
-#include "physics/trace.h"
-#include "physics/world.h"
+#include "physics/engine/interaction/mouse_spring.h"
+#include "physics/engine/scene.h"
+#include "physics/engine/trace.h"
+#include "physics/engine/world.h"
 
 #include <QObject>
 #include <QString>

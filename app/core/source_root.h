@@ -1,6 +1,6 @@
 // Where the workbook's files are at run time: the source tree, so the app can show the
 // physics statement that computed a traced number (TraceEntry's source location,
-// relative to the repository root, e.g. "physics/integrators/explicit_euler.cpp"), and
+// relative to the repository root, e.g. "physics/engine/integrators/explicit_euler.cpp"), and
 // the installed data folder an installed rbw or rigid-workbook reads its lessons from.
 #pragma once
 

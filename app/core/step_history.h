@@ -15,7 +15,7 @@
 #pragma once
 
 #include "app/core/compact_trace.h"
-#include "physics/world.h"
+#include "physics/engine/world.h"
 
 #include <cstddef>
 #include <deque>

@@ -42,8 +42,8 @@ expected_files=(
     "$data/lessons/01-one-step/lesson.md"
     "$data/lessons/01-one-step/derivation.md"
     "$data/lessons/07-bounce/impulses.json"
-    "$data/source/physics/world.cpp"
-    "$data/source/physics/integrators/explicit_euler.cpp"
+    "$data/source/physics/engine/world.cpp"
+    "$data/source/physics/engine/integrators/explicit_euler.cpp"
     "share/applications/$app_id.desktop"
     "share/icons/hicolor/scalable/apps/$app_id.svg"
     "share/metainfo/$app_id.metainfo.xml"
@@ -64,7 +64,7 @@ diff -u "$tmp/lessons.src" "$tmp/lessons.inst" >/dev/null || fail "installed les
 (cd "$source_dir/physics" && find . -type f \( -name '*.h' -o -name '*.cpp' \) | sort) >"$tmp/physics.src"
 (cd "$prefix/$data/source/physics" && find . -type f | sort) >"$tmp/physics.inst"
 diff -u "$tmp/physics.src" "$tmp/physics.inst" >/dev/null || fail "installed physics sources differ from physics/"
-cmp -s "$source_dir/physics/world.cpp" "$prefix/$data/source/physics/world.cpp" || fail "installed world.cpp is not the source's"
+cmp -s "$source_dir/physics/engine/world.cpp" "$prefix/$data/source/physics/engine/world.cpp" || fail "installed world.cpp is not the source's"
 bin_listing=$(cd "$prefix/bin" && ls | tr '\n' ' ')
 [ "$bin_listing" = "rbw rigid-workbook " ] || fail "bin/ holds \"$bin_listing\", expected rbw and rigid-workbook only"
 top_listing=$(cd "$prefix" && ls | tr '\n' ' ')

@@ -1,0 +1,362 @@
+#include "app/gui/panels/quantities/trace_model.h"
+
+#include "app/output/value_format.h"
+#include "physics/engine/quantities.h"
+
+#include <QBrush>
+#include <QColor>
+#include <QFont>
+
+namespace rbw {
+
+namespace {
+
+QString humanName(const TraceEntry& e)
+{
+    const QString id = QString::fromLatin1(e.info->id);
+    if (e.info->stage == Stage::Collision) {
+        // Inside a contact's group the index is the group itself.
+        if (e.info == &q::x_a || e.info == &q::x_b) return id;
+        if (e.info == &q::contact_point) return QObject::tr("contact point");
+        return QString(id).replace('_', ' ').replace(QStringLiteral(" a"), QStringLiteral(" A")).replace(QStringLiteral(" b"), QStringLiteral(" B"));
+    }
+    QString name = QString(id).replace('_', ' ');
+    if (e.index >= 0) {
+        name += e.info->stage == Stage::Probes ? QStringLiteral(" (probe %1)").arg(e.index)
+                                               : QStringLiteral(" #%1").arg(e.index);
+    }
+    return name;
+}
+
+QString stageTitle(Stage s)
+{
+    switch (s) {
+    case Stage::Forces: return QObject::tr("Forces");
+    case Stage::Integration: return QObject::tr("Integration");
+    case Stage::Collision: return QObject::tr("Collisions");
+    case Stage::Correction: return QObject::tr("Position correction");
+    case Stage::Probes: return QObject::tr("Probe points");
+    }
+    return {};
+}
+
+bool sameValue(const TraceValue& a, const TraceValue& b)
+{
+    if (a.index() != b.index()) return false;
+    return std::visit(
+        [&](const auto& x) {
+            using T = std::decay_t<decltype(x)>;
+            const T& y = std::get<T>(b);
+            if constexpr (std::is_same_v<T, double>) return x == y;
+            else if constexpr (std::is_same_v<T, Quat>) return x.coeffs() == y.coeffs();
+            else return x == y;
+        },
+        a);
+}
+
+} // namespace
+
+TraceModel::TraceModel(QObject* parent)
+    : QAbstractItemModel(parent)
+{
+    nodes_.push_back(Node{});
+}
+
+void TraceModel::clear()
+{
+    beginResetModel();
+    trace_ = StepTrace{};
+    changed_.clear();
+    nodes_.assign(1, Node{});
+    rowOfEntry_.clear();
+    endResetModel();
+}
+
+bool TraceModel::sameShape(const StepTrace& next) const
+{
+    if (next.entries.size() != trace_.entries.size() || next.contacts.size() != trace_.contacts.size()) return false;
+    for (size_t k = 0; k < next.contacts.size(); ++k) {
+        const ContactHeader& a = next.contacts[k];
+        const ContactHeader& b = trace_.contacts[k];
+        if (a.bodyA != b.bodyA || a.bodyB != b.bodyB || a.plane != b.plane || a.separating != b.separating ||
+            a.pointCount != b.pointCount || std::string_view(a.feature) != b.feature) {
+            return false;
+        }
+    }
+    for (size_t i = 0; i < next.entries.size(); ++i) {
+        const TraceEntry& a = next.entries[i];
+        const TraceEntry& b = trace_.entries[i];
+        if (a.info != b.info || a.body != b.body || a.index != b.index) return false;
+        // Another statement computed it (another integrator): the Source column changes.
+        if (a.where.line() != b.where.line() || sourceFile(a) != sourceFile(b)) return false;
+    }
+    return true;
+}
+
+void TraceModel::setTrace(const StepTrace& trace, const SceneDef& scene)
+{
+    if (!trace_.entries.empty() && sameShape(trace)) {
+        // Same rows: report only rows whose value or highlight changed.
+        std::vector<char> touched(trace.entries.size(), 0);
+        for (size_t i = 0; i < trace.entries.size(); ++i) {
+            const char nowChanged = !sameValue(trace.entries[i].value, trace_.entries[i].value);
+            touched[i] = nowChanged || changed_[i];
+            changed_[i] = nowChanged;
+        }
+        trace_ = trace;
+        for (size_t i = 0; i < trace_.entries.size(); ++i) {
+            if (!touched[i]) continue;
+            const Node& n = nodes_[rowOfEntry_[i]];
+            emit dataChanged(createIndex(n.row, 0, quintptr(rowOfEntry_[i])),
+                             createIndex(n.row, ColumnCount - 1, quintptr(rowOfEntry_[i])));
+        }
+        return;
+    }
+    beginResetModel();
+    // A new shape: a row is "changed" when the previous step had no row with the same
+    // quantity, body and index, or had a different value there.
+    changed_.assign(trace.entries.size(), 0);
+    if (!trace_.entries.empty()) {
+        for (size_t i = 0; i < trace.entries.size(); ++i) {
+            const TraceEntry& e = trace.entries[i];
+            const TraceEntry* before = trace_.find(e.info->id, e.body, e.index);
+            changed_[i] = before == nullptr || before->info->stage != e.info->stage || !sameValue(before->value, e.value);
+        }
+    }
+    trace_ = trace;
+    rebuild(scene);
+    endResetModel();
+}
+
+void TraceModel::rebuild(const SceneDef& scene)
+{
+    nodes_.assign(1, Node{});
+    rowOfEntry_.assign(trace_.entries.size(), -1);
+    auto addChild = [&](int parent, const QString& label, int entry) {
+        Node n;
+        n.parent = parent;
+        n.row = static_cast<int>(nodes_[parent].children.size());
+        n.label = label;
+        n.entry = entry;
+        nodes_.push_back(n);
+        const int id = static_cast<int>(nodes_.size()) - 1;
+        nodes_[parent].children.push_back(id);
+        return id;
+    };
+    // Stages in pipeline order, then bodies in scene order, then entries in trace order.
+    // The collision stage groups by contact instead: its world-level counts first, then
+    // one group per contact ("contact 0: A ↔ B · vertex-face").
+    auto bodyOrPlane = [&](int body, int plane) {
+        if (plane >= 0) return QString::fromStdString(scene.planes[plane].name);
+        return body >= 0 ? QString::fromStdString(scene.bodies[body].name) : QString();
+    };
+    for (Stage stage : {Stage::Forces, Stage::Integration, Stage::Collision, Stage::Correction, Stage::Probes}) {
+        int stageNode = -1;
+        if (stage == Stage::Collision) {
+            for (size_t i = 0; i < trace_.entries.size(); ++i) {
+                const TraceEntry& e = trace_.entries[i];
+                if (e.info->stage != Stage::Collision || e.index >= 0) continue;
+                if (stageNode < 0) stageNode = addChild(0, stageTitle(stage), -1);
+                rowOfEntry_[i] = addChild(stageNode, QString(), static_cast<int>(i));
+            }
+            // Contacts grouped by pair: a pair with several contacts (the corners of a
+            // box on a plane, the points of a manifold) gets a node of its own, with
+            // one node per point under it.
+            auto samePair = [](const ContactHeader& a, const ContactHeader& b) {
+                return a.bodyA == b.bodyA && a.bodyB == b.bodyB && a.plane == b.plane;
+            };
+            int pairNode = -1;
+            for (int k = 0; k < static_cast<int>(trace_.contacts.size()); ++k) {
+                const ContactHeader& c = trace_.contacts[k];
+                if (stageNode < 0) stageNode = addChild(0, stageTitle(stage), -1);
+                const bool newPair = k == 0 || !samePair(c, trace_.contacts[k - 1]);
+                int points = 1;
+                while (k + points < static_cast<int>(trace_.contacts.size()) &&
+                       samePair(c, trace_.contacts[k + points])) {
+                    ++points;
+                }
+                const QString pair = QStringLiteral("%1 ↔ %2").arg(bodyOrPlane(c.bodyA, -1), bodyOrPlane(c.bodyB, c.plane));
+                if (newPair) {
+                    pairNode = points > 1 ? addChild(stageNode, tr("%1 · %2 contacts").arg(pair).arg(points), -1) : -1;
+                }
+                QString label = pairNode >= 0 ? tr("contact %1 · %2").arg(k).arg(QString::fromLatin1(c.feature))
+                                              : tr("contact %1: %2 · %3").arg(k).arg(pair, QString::fromLatin1(c.feature));
+                if (c.pointCount > 1) label += tr(" · average of %1 corners").arg(c.pointCount);
+                if (c.separating) label += tr(" · separating: no impulse");
+                const int contactNode = addChild(pairNode >= 0 ? pairNode : stageNode, label, -1);
+                for (size_t i = 0; i < trace_.entries.size(); ++i) {
+                    const TraceEntry& e = trace_.entries[i];
+                    if (e.info->stage == Stage::Collision && e.index == k) {
+                        rowOfEntry_[i] = addChild(contactNode, QString(), static_cast<int>(i));
+                    }
+                }
+            }
+            continue;
+        }
+        for (int body = -1; body < static_cast<int>(scene.bodies.size()); ++body) {
+            int bodyNode = -1;
+            for (size_t i = 0; i < trace_.entries.size(); ++i) {
+                const TraceEntry& e = trace_.entries[i];
+                if (e.info->stage != stage || e.body != body) continue;
+                if (stageNode < 0) stageNode = addChild(0, stageTitle(stage), -1);
+                if (bodyNode < 0) {
+                    bodyNode = body < 0 ? stageNode
+                                        : addChild(stageNode, QString::fromStdString(scene.bodies[body].name), -1);
+                }
+                rowOfEntry_[i] = addChild(bodyNode, QString(), static_cast<int>(i));
+            }
+        }
+    }
+}
+
+QModelIndex TraceModel::index(int row, int column, const QModelIndex& parent) const
+{
+    const int p = parent.isValid() ? static_cast<int>(parent.internalId()) : 0;
+    if (row < 0 || column < 0 || column >= ColumnCount || row >= static_cast<int>(nodes_[p].children.size())) {
+        return {};
+    }
+    return createIndex(row, column, quintptr(nodes_[p].children[row]));
+}
+
+QModelIndex TraceModel::parent(const QModelIndex& child) const
+{
+    if (!child.isValid()) return {};
+    const int p = nodes_[child.internalId()].parent;
+    if (p <= 0) return {};
+    return createIndex(nodes_[p].row, 0, quintptr(p));
+}
+
+int TraceModel::rowCount(const QModelIndex& parent) const
+{
+    if (parent.isValid() && parent.column() != 0) return 0;
+    const int p = parent.isValid() ? static_cast<int>(parent.internalId()) : 0;
+    return static_cast<int>(nodes_[p].children.size());
+}
+
+int TraceModel::columnCount(const QModelIndex&) const
+{
+    return ColumnCount;
+}
+
+const TraceEntry* TraceModel::entryAt(const QModelIndex& index) const
+{
+    if (!index.isValid()) return nullptr;
+    const int e = nodes_[index.internalId()].entry;
+    return e < 0 ? nullptr : &trace_.entries[e];
+}
+
+QString TraceModel::rowText(const QModelIndex& index) const
+{
+    const TraceEntry* e = entryAt(index);
+    if (e == nullptr) return {};
+    QString text = QString::fromUtf8(e->info->text) + QStringLiteral(" = ") + formatValue(e->value);
+    if (*e->info->unit) text += ' ' + QString::fromUtf8(e->info->unit);
+    if (e->info->frame != Frame::None) text += QStringLiteral(" [%1]").arg(frameName(e->info->frame));
+    return text;
+}
+
+QVariant TraceModel::data(const QModelIndex& index, int role) const
+{
+    if (!index.isValid()) return {};
+    const Node& n = nodes_[index.internalId()];
+    if (n.entry < 0) {
+        // The whole label also as a tooltip: a long one (a contact's pair, feature and
+        // point) is elided where the Quantity column is capped (MainWindow).
+        if ((role == Qt::DisplayRole || role == Qt::ToolTipRole) && index.column() == QuantityColumn) return n.label;
+        if (role == Qt::FontRole) {
+            QFont f;
+            f.setBold(true);
+            return f;
+        }
+        return {};
+    }
+    const TraceEntry& e = trace_.entries[n.entry];
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (index.column()) {
+        case QuantityColumn: return humanName(e);
+        case SymbolColumn: return QString::fromUtf8(e.info->text);
+        case BeforeColumn: {
+            TraceValue before;
+            if (!startValue(trace_, e.info->id, e.body, e.index, &before)) return {};
+            return formatValueLines(before);
+        }
+        case ValueColumn: return formatValueLines(e.value);
+        case FrameColumn: return QString::fromLatin1(frameName(e.info->frame));
+        case UnitColumn: return QString::fromUtf8(e.info->unit);
+        case SourceColumn: {
+            // The file's name and the line; the tooltip has the path in the tree.
+            const std::string_view file = sourceFile(e);
+            const size_t slash = file.rfind('/');
+            const std::string_view name = slash == std::string_view::npos ? file : file.substr(slash + 1);
+            return QStringLiteral("%1:%2")
+                .arg(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())))
+                .arg(sourceLine(e));
+        }
+        case FormulaColumn: return QString::fromUtf8(e.info->formula);
+        }
+        return {};
+    case Qt::TextAlignmentRole:
+        return QVariant(Qt::AlignLeft | Qt::AlignTop);
+    case Qt::ToolTipRole:
+        if (index.column() == SourceColumn) {
+            return QString::fromStdString(sourceText(e));
+        }
+        if (index.column() == BeforeColumn) {
+            return tr("%1 at the start of step %2, the value this step starts from")
+                .arg(QString::fromUtf8(e.info->text))
+                .arg(trace_.step);
+        }
+        return tr("%1\nComputed in %2").arg(QString::fromUtf8(e.info->formula), QString::fromStdString(sourceText(e)));
+    case Qt::BackgroundRole:
+        if (changed_[n.entry]) return QBrush(QColor(255, 244, 196));
+        return {};
+    case Qt::FontRole:
+        if (index.column() == ValueColumn || index.column() == BeforeColumn || index.column() == SourceColumn) {
+            return QFont(QStringLiteral("monospace"));
+        }
+        return {};
+    case IdRole:
+        return QString::fromLatin1(e.info->id);
+    case FormulaLatexRole:
+        return QString::fromUtf8(e.info->formula);
+    case ValueLatexRole:
+        return latexValue(e.value);
+    case BeforeLatexRole: {
+        TraceValue before;
+        if (!startValue(trace_, e.info->id, e.body, e.index, &before)) return {};
+        return latexValue(before);
+    }
+    case NameRole:
+        return humanName(e);
+    case LatexRole:
+        return QString::fromUtf8(e.info->symbol) + QStringLiteral(" = ") + latexValue(e.value);
+    case ChangedRole:
+        return bool(changed_[n.entry]);
+    case SourceFileRole: {
+        const std::string_view file = sourceFile(e);
+        return QString::fromUtf8(file.data(), static_cast<qsizetype>(file.size()));
+    }
+    case SourceLineRole:
+        return static_cast<int>(sourceLine(e));
+    }
+    return {};
+}
+
+QVariant TraceModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
+    switch (section) {
+    case QuantityColumn: return tr("Quantity");
+    case SymbolColumn: return tr("Symbol");
+    case BeforeColumn: return tr("Before");
+    case ValueColumn: return tr("After");
+    case FrameColumn: return tr("Frame");
+    case UnitColumn: return tr("Unit");
+    case SourceColumn: return tr("Source");
+    case FormulaColumn: return tr("Formula (LaTeX)");
+    }
+    return {};
+}
+
+} // namespace rbw

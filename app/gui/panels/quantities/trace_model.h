@@ -1,0 +1,82 @@
+// A tree model over one step's trace: stage -> body -> quantity rows, with columns
+// quantity, symbol, before (the value at the start of the step, for the state
+// quantities x, v, r, L, R, I^-1, omega and the probe points: StepTrace::start),
+// after (the value the step computed), frame, unit, source (the physics statement that computed
+// the value: "explicit_euler.cpp:27", with sourceText's "physics/engine/integrators/
+// explicit_euler.cpp:27" as its tooltip) and formula. It only presents the trace; it
+// never computes a number. When the next step has the same rows, only the values
+// that changed are reported (dataChanged), and they are highlighted.
+#pragma once
+
+#include "physics/engine/scene.h"
+#include "physics/engine/trace.h"
+
+#include <QAbstractItemModel>
+
+#include <vector>
+
+namespace rbw {
+
+class TraceModel : public QAbstractItemModel {
+    Q_OBJECT
+public:
+    enum Column {
+        QuantityColumn,
+        SymbolColumn,
+        BeforeColumn,
+        ValueColumn,   // "After": the value the step computed
+        FrameColumn,
+        UnitColumn,
+        SourceColumn,
+        FormulaColumn,
+        ColumnCount
+    };
+    enum Role {
+        IdRole = Qt::UserRole + 1,   // the quantity's stable id, on every column of a row
+        LatexRole,                   // "symbol = value" in LaTeX
+        ChangedRole,                 // true when the value differs from the previous step's
+        SourceFileRole,              // the computing statement's file, relative to the source tree
+        SourceLineRole,              // and its line (1-based)
+        FormulaLatexRole,            // the catalogue's formula, LaTeX (for the typeset formula pane)
+        ValueLatexRole,              // the value the step computed, LaTeX
+        BeforeLatexRole,             // the value at the start of the step, LaTeX; invalid if none
+        NameRole,                    // the quantity's full name ("angular velocity of box")
+    };
+
+    explicit TraceModel(QObject* parent = nullptr);
+
+    // Shows this trace; bodies are named from the scene. Passing an empty trace clears.
+    void setTrace(const StepTrace& trace, const SceneDef& scene);
+    void clear();
+    const StepTrace& trace() const { return trace_; }
+
+    QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
+    QModelIndex parent(const QModelIndex& child) const override;
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+    // The entry a row shows, or nullptr for a group row.
+    const TraceEntry* entryAt(const QModelIndex& index) const;
+    // "ω = (-2.4, 4.918033, -1.764706) rad/s [world]"
+    QString rowText(const QModelIndex& index) const;
+
+private:
+    struct Node {
+        int parent = -1;          // node index, -1 for the invisible root
+        int row = 0;              // row within the parent
+        QString label;            // group label
+        int entry = -1;           // index into trace_.entries for a quantity row
+        std::vector<int> children;
+    };
+    void rebuild(const SceneDef& scene);
+    bool sameShape(const StepTrace& next) const;
+
+    StepTrace trace_;
+    std::vector<char> changed_;   // per entry
+    std::vector<Node> nodes_;     // nodes_[0] is the root
+    std::vector<int> rowOfEntry_; // node index of each entry
+};
+
+} // namespace rbw

@@ -1,0 +1,156 @@
+// The 3D view: a QOpenGLWidget (OpenGL 3.3 core) that draws a ViewSnapshot, the
+// world and the arrows of the current step, and lets the student orbit, pan, zoom,
+// pick and drag a body. It never steps or recomputes physics: it draws what the
+// snapshot (built from the world and the trace) holds, and turns a drag into
+// signals; the main window applies the spring force and passes the spring back.
+//
+// Mouse: left-drag on empty space (or Alt+left-drag anywhere) orbits; right- or
+// middle-drag pans; the wheel zooms; left-press on a movable box grabs it.
+// Keys: F frames the bodies, Home resets the view.
+#pragma once
+
+#include "app/gui/panels/view/frame_geometry.h"
+#include "app/gui/panels/view/orbit_camera.h"
+#include "app/gui/panels/view/scene_renderer.h"
+#include "app/gui/panels/view/view_snapshot.h"
+
+#include <QOpenGLWidget>
+#include <QPointF>
+#include <QString>
+#include <QVector3D>
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace rbw {
+
+class SceneView : public QOpenGLWidget {
+    Q_OBJECT
+public:
+    // The body under a pixel and where the ray from the eye first enters it.
+    struct Pick {
+        int body = -1;
+        Vec3 hit_W = Vec3::Zero();
+    };
+
+    explicit SceneView(QWidget* parent = nullptr);
+    ~SceneView() override;
+
+    // The format the view asks for: OpenGL 3.3 core, 24-bit depth, no multisampling.
+    static QSurfaceFormat requestedFormat();
+
+    // Shows a new state. Appends each body's x_W to its trail; a snapshot of another
+    // scene (other bodies or planes) clears the trails and frames the new scene, and
+    // one that goes back in time (a reset) clears the trails.
+    void setSnapshot(const ViewSnapshot& snapshot);
+    const ViewSnapshot& snapshot() const { return snapshot_; }
+
+    // The drag spring (picked point, target), drawn as a line; nullopt hides it.
+    void setSpring(std::optional<std::pair<Vec3, Vec3>> fromTo_W);
+
+    void clearTrails();
+    void setTrailsVisible(bool visible);
+    bool trailsVisible() const { return trailsVisible_; }
+    const std::vector<std::vector<Vec3>>& trails() const { return trails_; }
+
+    // Camera. resetView: the default angles (slightly above the scene), framing the bodies.
+    void resetView();
+    void fitToScene();   // frames all bodies, keeps the angles; infinite planes are ignored
+    const OrbitCamera& camera() const { return camera_; }
+    void orbitBy(double dxPx, double dyPx);
+    void panBy(double dxPx, double dyPx);
+    void zoomBy(double wheelSteps);
+
+    // Picking and projection in widget (logical) pixels.
+    std::optional<Pick> pick(QPoint widgetPos) const;   // through the centre of that pixel
+    Ray rayAt(const QPointF& widgetPos) const;
+    // Where a world point appears; a point behind the camera maps to (-1, -1).
+    QPointF projectToWidget(const Vec3& p_W) const;
+
+    // For fps measurements and diagnostics.
+    int framesRendered() const { return framesRendered_; }
+    QString glVersionString() const { return glVersion_; }
+    bool isGlReady() const { return glReady_; }
+    QString glError() const { return glError_; }   // why nothing is drawn, empty if fine
+
+    // What the arrows of the last frame are scaled to (see frame_geometry.h), and the
+    // arrows themselves (what each shows, from where to where).
+    const view::ArrowScales& arrowScales() const { return scales_; }
+    const std::vector<view::ArrowRecord>& arrows() const { return arrows_; }
+    // The same arrows as the next frame draws them, without drawing (tests, no GL needed).
+    std::vector<view::ArrowRecord> currentArrows() const;
+
+    // The state arrows at each body's centre: v, ω and L (View menu).
+    void setShowVelocity(bool on);
+    void setShowAngularVelocity(bool on);
+    void setShowAngularMomentum(bool on);
+    bool showsVelocity() const { return showVelocity_; }
+    bool showsAngularVelocity() const { return showOmega_; }
+    bool showsAngularMomentum() const { return showL_; }
+
+    // The camera follows body b (its centre stays the orbit target as it moves); -1
+    // stops following. A body that is not finite is not followed.
+    void setFollowBody(int body);
+    int followBody() const { return followBody_; }
+
+    // The info overlay (top left): step, t, h, the integrator and the energy E.
+    QString infoText() const;
+
+    QSize sizeHint() const override { return {640, 480}; }
+    QSize minimumSizeHint() const override { return {160, 120}; }
+
+signals:
+    void grabStarted(int body, QVector3D hit_W);
+    void grabMoved(QVector3D target_W);   // on the plane through the hit point, facing the camera
+    void grabEnded();
+
+protected:
+    void initializeGL() override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    enum class DragMode { None, Orbit, Pan, Grab };
+
+    double aspect() const;
+    void releaseGl();
+    void paintLegend(QPainter& painter) const;
+    void paintInfo(QPainter& painter) const;
+    view::FrameOptions frameOptions() const;
+    void follow();
+    void paintGlError(QPainter& painter) const;
+    bool sameScene(const ViewSnapshot& other) const;
+    void updateSceneBox();
+
+    ViewSnapshot snapshot_;
+    bool hasSnapshot_ = false;
+    std::vector<std::vector<Vec3>> trails_;
+    bool trailsVisible_ = true;
+    view::Bounds sceneBox_;   // grows with the bodies; where plane patches end
+
+    OrbitCamera camera_;
+    DragMode drag_ = DragMode::None;
+    QPointF lastMouse_;
+    int grabBody_ = -1;
+    Vec3 grabPoint_W_ = Vec3::Zero();   // a point on the drag plane
+    Vec3 grabNormal_W_ = Vec3::UnitZ();   // the drag plane's normal (the view direction at grab time)
+
+    view::SceneRenderer renderer_;
+    view::ArrowScales scales_;
+    std::vector<view::ArrowRecord> arrows_;
+    bool showVelocity_ = false;
+    bool showOmega_ = false;
+    bool showL_ = false;
+    int followBody_ = -1;
+    bool glReady_ = false;
+    QString glError_;
+    QString glVersion_;
+    int framesRendered_ = 0;
+};
+
+} // namespace rbw

@@ -1,0 +1,116 @@
+#include "app/gui/shell/history_scrubber.h"
+
+#include "app/core/session.h"
+
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QSpinBox>
+
+#include <algorithm>
+#include <climits>
+
+namespace rbw {
+
+HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
+    : QWidget(parent)
+    , session_(session)
+{
+    setObjectName("historyScrubber");
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(8, 3, 8, 3);
+    layout->setSpacing(8);
+
+    auto* title = new QLabel(tr("History"));
+    title->setToolTip(tr("Every recorded step (up to the last 1000; fewer in a scene with many bodies, whose steps "
+                         "take more memory). Drag to see the state and the numbers of "
+                         "any recorded step exactly as they were computed. Stepping or playing from an earlier "
+                         "step discards the later ones."));
+    layout->addWidget(title);
+
+    slider_ = new QSlider(Qt::Horizontal);
+    slider_->setObjectName("historySlider");
+    slider_->setRange(0, 0);
+    slider_->setFocusPolicy(Qt::ClickFocus);
+    slider_->setToolTip(title->toolTip());
+    connect(slider_, &QSlider::valueChanged, this, &HistoryScrubber::onSliderValueChanged);
+    layout->addWidget(slider_, 1);
+
+    label_ = new QLabel;
+    label_->setObjectName("historyLabel");
+    label_->setMinimumWidth(label_->fontMetrics().horizontalAdvance(QStringLiteral("step 000000 of 000000")));
+    layout->addWidget(label_);
+
+    layout->addWidget(new QLabel(tr("Go to step")));
+    stepBox_ = new QSpinBox;
+    stepBox_->setObjectName("goToStepBox");
+    stepBox_->setRange(0, 10000000);
+    stepBox_->setKeyboardTracking(false);
+    stepBox_->setFocusPolicy(Qt::ClickFocus);   // never takes the keys the view's shortcuts need by itself
+    stepBox_->setToolTip(tr("A recorded step is shown exactly as recorded; a later one is reached by stepping on."));
+    layout->addWidget(stepBox_);
+    goButton_ = new QPushButton(tr("Go"));
+    goButton_->setObjectName("goToStepButton");
+    goButton_->setFocusPolicy(Qt::TabFocus);
+    connect(goButton_, &QPushButton::clicked, this, [this] {
+        stepBox_->interpretText();
+        emit stepRequested(stepBox_->value());
+    });
+    connect(stepBox_, &QSpinBox::editingFinished, this, [this] {
+        if (stepBox_->hasFocus()) emit stepRequested(stepBox_->value());
+    });
+    layout->addWidget(goButton_);
+    stepBox_->installEventFilter(this);
+    sync();
+}
+
+bool HistoryScrubber::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == stepBox_ && event->type() == QEvent::KeyPress &&
+        static_cast<QKeyEvent*>(event)->key() == Qt::Key_Escape) {
+        emit focusReturnRequested();   // the box loses the focus first ...
+        sync();                        // ... so this drops what was typed
+        return true;
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void HistoryScrubber::sync()
+{
+    const World* world = session_->world();
+    const StepHistory& h = session_->history();
+    const bool any = world != nullptr && !h.empty();
+    setEnabled(any);
+    if (!any) {
+        label_->setText(tr("no steps yet"));
+        return;
+    }
+    syncing_ = true;
+    {
+        const QSignalBlocker block(slider_);
+        const int first = static_cast<int>(std::min<long>(h.firstStep(), INT_MAX));
+        const int last = static_cast<int>(std::min<long>(h.lastStep(), INT_MAX));
+        slider_->setRange(first, last);
+        slider_->setValue(static_cast<int>(std::min<long>(world->stepIndex(), INT_MAX)));
+        slider_->setPageStep(std::max(1, (last - first) / 20));
+    }
+    syncing_ = false;
+    // The box shows the current step, unless the student is typing one.
+    if (!stepBox_->hasFocus()) {
+        const QSignalBlocker block(stepBox_);
+        stepBox_->setValue(static_cast<int>(std::min<long>(world->stepIndex(), stepBox_->maximum())));
+    }
+    QString text = tr("step %1 of %2").arg(world->stepIndex()).arg(h.lastStep());
+    if (h.firstStep() > 0) text += tr(" (from %1)").arg(h.firstStep());
+    label_->setText(text);
+}
+
+void HistoryScrubber::onSliderValueChanged(int value)
+{
+    if (!syncing_) emit stepRequested(value);
+}
+
+} // namespace rbw

@@ -1,0 +1,260 @@
+#include "physics/engine/manifold/manifold_contact_stage.h"
+
+#include "physics/engine/manifold/box_box_clip.h"
+#include "physics/engine/manifold/box_plane_manifold.h"
+#include "physics/engine/quantities.h"
+#include "physics/engine/course/contact_response.h"
+
+#include <algorithm>
+
+namespace rbw {
+
+namespace {
+
+bool awakeMovable(const StepContext& ctx, const ContactWorld& w, int b)
+{
+    return ctx.movable[static_cast<std::size_t>(b)] && !w.sleep.asleep(b);
+}
+
+bool sleepingBody(const StepContext& ctx, const ContactWorld& w, int b)
+{
+    return ctx.movable[static_cast<std::size_t>(b)] && w.sleep.asleep(b);
+}
+
+} // namespace
+
+void ManifoldContactStage::run(StepContext& ctx)
+{
+    ContactWorld& w = *world_;
+    const int n = static_cast<int>(ctx.states.size());
+    if (static_cast<int>(w.bodies.size()) != n + 1) {
+        w.bodies.assign(static_cast<std::size_t>(n + 1), SolverBody{});
+        w.sleep.resize(n);
+        w.cache.clear();
+    }
+    if (w.settings.sleep) wakeLoadedBodies(ctx);
+    findManifolds(ctx);
+    solve(ctx);
+    if (ctx.trace != nullptr) recordPoints(ctx);
+    // Keep the impulses of this step's manifolds, and of the sleeping pairs not solved.
+    w.cache.store(w.manifolds, [&ctx, &w](std::uint64_t key) {
+        const int a = static_cast<int>(key >> 32);
+        const std::uint64_t low = key & 0xffffffffu;
+        const int b = low >= (std::uint64_t{1} << 31) ? -1 : static_cast<int>(low);
+        if (a >= static_cast<int>(ctx.states.size()) || b >= static_cast<int>(ctx.states.size())) return false;
+        const bool sleepingA = sleepingBody(ctx, w, a);
+        return sleepingA && (b < 0 || !awakeMovable(ctx, w, b));
+    });
+}
+
+void ManifoldContactStage::wakeLoadedBodies(StepContext& ctx)
+{
+    ContactWorld& w = *world_;
+    for (int b = 0; b < static_cast<int>(ctx.states.size()); ++b) {
+        if (!sleepingBody(ctx, w, b)) continue;
+        const BodyState& s = ctx.states[static_cast<std::size_t>(b)];
+        // A sleeping body has v = L = 0 and no load but its weight M g; anything else
+        // (a drag, a push, a force of the scene, a restored moving state) wakes it.
+        const Vec3 weight_W = ctx.mass[static_cast<std::size_t>(b)].M * ctx.scene.g_W;
+        const BodyLoad& load = ctx.loads[static_cast<std::size_t>(b)];
+        if (s.v_W != Vec3::Zero() || s.L_W != Vec3::Zero() || load.F_W != weight_W || load.q_W != Vec3::Zero()) {
+            w.sleep.wake(b);
+        }
+    }
+}
+
+bool ManifoldContactStage::collidePair(StepContext& ctx, int a, int b)
+{
+    ContactWorld& w = *world_;
+    Manifold& m = w.manifolds.emplace_back();
+    if (!collideBoxBoxManifold(poseOf(ctx, a), poseOf(ctx, b), w.settings.margin, m, w.settings.maxPoints)) {
+        w.manifolds.pop_back();
+        return false;
+    }
+    m.a = a;
+    m.b = b;
+    m.plane = -1;
+    m.mu = ctx.scene.frictionFor(a, b, -1);
+    m.restitution = ctx.scene.restitutionFor(a, b, -1);
+    w.cache.warmStart(m);
+    return true;
+}
+
+void ManifoldContactStage::findManifolds(StepContext& ctx)
+{
+    ContactWorld& w = *world_;
+    const int n = static_cast<int>(ctx.states.size());
+    const double margin = w.settings.margin;
+    w.manifolds.clear();
+    if (boxPairs_) {
+        // AABBs grown by the speculative margin, so pairs about to touch are found.
+        w.aabbs.resize(static_cast<std::size_t>(n));
+        for (int b = 0; b < n; ++b) {
+            Aabb box = boxAabb(poseOf(ctx, b));
+            box.min_W -= Vec3::Constant(margin);
+            box.max_W += Vec3::Constant(margin);
+            w.aabbs[static_cast<std::size_t>(b)] = box;
+        }
+        BroadPhaseStats& stats = ctx.scratch.broadPhase;
+        w.broadPhase.findPairs(w.aabbs, ctx.movable, w.pairs, stats);
+        record(ctx.trace, q::pairs_tested, -1, double(stats.pairsTested));
+        record(ctx.trace, q::pairs_overlapping, -1, double(stats.pairsOverlapping));
+        w.pairDone.assign(w.pairs.size(), 0);
+        // A sleeping body touched by an awake movable one wakes with its island; repeat
+        // until no more wake, since a woken body may touch another sleeping one.
+        bool woke = w.settings.sleep;
+        while (woke) {
+            woke = false;
+            for (std::size_t i = 0; i < w.pairs.size(); ++i) {
+                if (w.pairDone[i]) continue;
+                const auto [a, b] = w.pairs[i];
+                const bool wakesB = awakeMovable(ctx, w, a) && sleepingBody(ctx, w, b);
+                const bool wakesA = awakeMovable(ctx, w, b) && sleepingBody(ctx, w, a);
+                if (!wakesA && !wakesB) continue;
+                w.pairDone[i] = 1;
+                if (collidePair(ctx, a, b)) {
+                    w.sleep.wake(wakesB ? b : a);
+                    woke = true;
+                }
+            }
+        }
+        // Every other pair with an awake movable body; pairs of sleeping (or fixed)
+        // bodies are left alone, their impulses kept for when they wake.
+        for (std::size_t i = 0; i < w.pairs.size(); ++i) {
+            if (w.pairDone[i]) continue;
+            const auto [a, b] = w.pairs[i];
+            if (awakeMovable(ctx, w, a) || awakeMovable(ctx, w, b)) collidePair(ctx, a, b);
+        }
+    }
+    if (planes_) {
+        for (int p = 0; p < static_cast<int>(ctx.scene.planes.size()); ++p) {
+            for (int b = 0; b < n; ++b) {
+                if (!awakeMovable(ctx, w, b)) continue;
+                Manifold& m = w.manifolds.emplace_back();
+                if (!collideBoxPlaneManifold(poseOf(ctx, b), ctx.scene.planes[static_cast<std::size_t>(p)], margin, m)) {
+                    w.manifolds.pop_back();
+                    continue;
+                }
+                m.a = b;
+                m.b = -1;
+                m.plane = p;
+                m.mu = ctx.scene.frictionFor(b, -1, p);
+                m.restitution = ctx.scene.restitutionFor(b, -1, p);
+                w.cache.warmStart(m);
+            }
+        }
+    }
+}
+
+void ManifoldContactStage::solve(StepContext& ctx)
+{
+    ContactWorld& w = *world_;
+    const int n = static_cast<int>(ctx.states.size());
+    const double h = ctx.scene.dt;
+    for (int b = 0; b <= n; ++b) {
+        SolverBody& sb = w.bodies[static_cast<std::size_t>(b)];
+        sb = SolverBody{};
+        if (b == n || !awakeMovable(ctx, w, b)) continue;   // static: fixed, asleep, the planes' body
+        const BodyState& s = ctx.states[static_cast<std::size_t>(b)];
+        const MassProperties& mp = ctx.mass[static_cast<std::size_t>(b)];
+        const BodyLoad& load = ctx.loads[static_cast<std::size_t>(b)];
+        sb.invM = mp.invM;
+        sb.Iinv_W = ctx.scene.bodies[static_cast<std::size_t>(b)].angularResponse ? s.Iinv_W : Mat3::Zero();
+        // The free velocities: v* = v + h F / M, omega* = omega + h I^-1 q
+        sb.v_W = s.v_W + (h * mp.invM) * load.F_W;
+        sb.omega_W = s.omega_W + h * (s.Iinv_W * load.q_W);
+    }
+    w.solver.prepare(w.manifolds, w.bodies, n, ctx.states, w.settings, h, ctx.scene.restitutionThreshold);
+    // Sequential impulses: up to solver_iterations sweeps, stopping when no accumulated
+    // impulse changed by more than the convergence tolerance in a sweep. With a trace,
+    // every point's impulses after each iteration are kept (recordPoints).
+    w.iterationsUsed = 0;
+    for (int it = 1; it <= w.settings.iterations && !w.manifolds.empty(); ++it) {
+        const double largest = w.solver.iterate(w.bodies, w.settings.normalSweeps);
+        if (ctx.trace != nullptr) w.solver.recordIterate();
+        w.iterationsUsed = it;
+        if (largest <= w.settings.convergence) break;
+    }
+    w.solver.finish(w.manifolds, w.bodies);
+    record(ctx.trace, q::solver_iterations_used, -1, double(w.iterationsUsed));
+    // The impulses become loads of the integration: F_c = P / h, q_c = L_c / h.
+    for (int b = 0; b < n; ++b) {
+        if (!ctx.movable[static_cast<std::size_t>(b)]) continue;
+        BodyLoad& load = ctx.loads[static_cast<std::size_t>(b)];
+        if (w.sleep.asleep(b)) {
+            // Asleep: the support cancels every load, F_c = -F, q_c = -q.
+            const Vec3 F_c = -load.F_W;
+            record(ctx.trace, q::sleep_contact_force, b, F_c);
+            const Vec3 q_c = -load.q_W;
+            record(ctx.trace, q::sleep_contact_torque, b, q_c);
+            load.F_W += F_c;
+            load.q_W += q_c;
+            continue;
+        }
+        const SolverBody& sb = w.bodies[static_cast<std::size_t>(b)];
+        if (sb.P_W == Vec3::Zero() && sb.Lc_W == Vec3::Zero()) continue;
+        // F_c = P / h
+        const Vec3 F_c = sb.P_W / h;
+        record(ctx.trace, q::contact_force, b, F_c);
+        load.F_W += F_c;
+        // A body without angular response is a particle for the contacts (its solver
+        // body has I^-1 = 0): the impulses' moments do not turn it.
+        if (!ctx.scene.bodies[static_cast<std::size_t>(b)].angularResponse) continue;
+        // q_c = L_c / h
+        const Vec3 q_c = sb.Lc_W / h;
+        record(ctx.trace, q::contact_torque, b, q_c);
+        load.q_W += q_c;
+    }
+}
+
+void ManifoldContactStage::recordPoints(StepContext& ctx) const
+{
+    const ContactWorld& w = *world_;
+    int points = 0;
+    for (const Manifold& m : w.manifolds) {
+        for (int k = 0; k < m.count; ++k) {
+            const ManifoldPoint& p = m.points[static_cast<std::size_t>(k)];
+            const int i = ctx.scratch.contactCount++;
+            ContactHeader& header = ctx.trace->contacts.emplace_back();
+            header.bodyA = m.a;
+            header.bodyB = m.b;
+            header.plane = m.plane;
+            header.feature = m.featureName();
+            header.resolution = "manifold";
+            header.pointCount = m.count;
+            header.separating = p.lambda_n == 0.0;
+            // The accumulated impulses after each velocity iteration (the solver's
+            // history, ContactSolver::recordIterate), lambda_t = lambda_t1 t1 + lambda_t2 t2
+            const std::vector<PointImpulses>& history = w.solver.history();
+            const std::size_t stride = static_cast<std::size_t>(w.solver.pointCount());
+            for (std::size_t it = 0; stride > 0 && (it + 1) * stride <= history.size(); ++it) {
+                const PointImpulses& iterate = history[it * stride + static_cast<std::size_t>(points)];
+                header.iterations.push_back(
+                    ImpulseIterate{iterate.lambda_n, iterate.lambda_t1 * m.t1_W + iterate.lambda_t2 * m.t2_W});
+            }
+            // p, n, d and the feature id as the narrow phase computed them (m.where)
+            ctx.trace->add(q::manifold_point, m.a, p.p_W, i, m.where);
+            ctx.trace->add(q::manifold_normal, m.a, m.n_W, i, m.where);
+            ctx.trace->add(q::manifold_depth, m.a, -p.separation, i, m.where);
+            ctx.trace->add(q::feature_id, m.a, double(p.feature), i, m.where);
+            // The solver's numbers (contact_solver.cpp: ContactSolver::prepare, warmStart,
+            // ContactSolver::iterate), accumulated over the iterations.
+            record(ctx.trace, q::manifold_normal_velocity, m.a, p.normalVelocity, i);
+            const QuantityInfo& target = w.settings.positionFix == PositionFix::Baumgarte
+                                             ? q::target_normal_velocity_baumgarte
+                                             : q::target_normal_velocity;
+            record(ctx.trace, target, m.a, p.v_target, i);
+            record(ctx.trace, q::normal_mass, m.a, p.m_n, i);
+            record(ctx.trace, q::warm_start_normal, m.a, p.warm_n, i);
+            record(ctx.trace, q::warm_start_tangent, m.a, p.warm_t_W, i);
+            record(ctx.trace, q::normal_impulse, m.a, p.lambda_n, i);
+            // lambda_t = lambda_t1 t1 + lambda_t2 t2
+            const Vec3 lambda_t_W = p.lambda_t1 * m.t1_W + p.lambda_t2 * m.t2_W;
+            record(ctx.trace, q::tangent_impulse, m.a, lambda_t_W, i);
+            ++points;
+        }
+    }
+    record(ctx.trace, q::manifold_points, -1, double(points));
+}
+
+} // namespace rbw

@@ -1,0 +1,36 @@
+// The manifold model's position fix, after the integration (contact/position_fix.h): with
+// "position_fix": "ngs" (the default) up to 3 non-linear Gauss-Seidel sweeps over this
+// step's manifold points (positionIterations, stopping once no point is deeper than the
+// slop) move x and r of the overlapping bodies apart, leaving `slop`
+// of overlap, and never touch v or L, so they add no kinetic energy (Box2D's
+// SolvePositionConstraints). With "baumgarte" or "none" nothing moves here. With a
+// trace it records each moved body's total correction and the deepest overlap left.
+#pragma once
+
+#include "physics/engine/manifold/contact_world.h"
+#include "physics/engine/manifold/position_fix.h"
+#include "physics/engine/stages/stage.h"
+
+#include <memory>
+
+namespace rbw {
+
+class ManifoldPositionStage final : public PipelineStep {
+public:
+    explicit ManifoldPositionStage(std::shared_ptr<ContactWorld> world) : world_(std::move(world)) {}
+    PipelineStage kind() const override { return PipelineStage::ManifoldPositions; }
+    void run(StepContext& ctx) override;
+
+private:
+    std::shared_ptr<ContactWorld> world_;
+    NgsSolver ngs_;               // this step's manifolds as the iterations read them
+    std::vector<Vec3> dx_W_;      // per body: its correction in this step
+    std::vector<char> moved_;     // per body: corrected in this step
+    std::vector<char> angular_;   // per body: contacts turn it (angular response)
+};
+
+// The deepest overlap among the manifold points at the bodies' current poses:
+// d_max = max(0, max over points of -s) [m].
+double deepestOverlap(const std::vector<Manifold>& manifolds, const std::vector<BodyState>& states);
+
+} // namespace rbw

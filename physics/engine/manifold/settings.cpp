@@ -1,0 +1,50 @@
+#include "physics/engine/manifold/settings.h"
+
+#include <string>
+
+namespace rbw {
+
+ManifoldSettings manifoldSettings(const SceneDef& scene)
+{
+    ManifoldSettings s;
+    s.iterations = scene.solverIterationsOr();
+    s.sleep = scene.sleepOr();
+    s.positionFix = scene.positionFixOr();
+    return s;
+}
+
+// The contact model's keys (docs/scene-format.md, "contact_model"): the manifold
+// model's own keys only with it, the course model's correction switches only without it,
+// and an iteration count a step can afford.
+void checkContactModel(std::vector<SceneIssue>& out, const SceneDef& scene)
+{
+    if (scene.contactModel != ContactModel::Course && scene.contactModel != ContactModel::Manifold) {
+        out.push_back({"contact_model", "must be \"course\" or \"manifold\""});
+        return;
+    }
+    if (scene.contactModel == ContactModel::Course) {
+        const char* hint = " belongs to the manifold model; add \"contact_model\": \"manifold\" or leave it out";
+        if (scene.solverIterations) out.push_back({"solver_iterations", std::string("the key") + hint});
+        if (scene.sleep) out.push_back({"sleep", std::string("the key") + hint});
+        if (scene.positionFix) out.push_back({"position_fix", std::string("the key") + hint});
+        return;
+    }
+    if (scene.solverIterations && !(*scene.solverIterations >= 1 && *scene.solverIterations <= 1000)) {
+        out.push_back({"solver_iterations", "must be a whole number from 1 to 1000, got " +
+                                                std::to_string(*scene.solverIterations)});
+    }
+    if (scene.positionFix && *scene.positionFix != PositionFix::Ngs && *scene.positionFix != PositionFix::Baumgarte &&
+        *scene.positionFix != PositionFix::None) {
+        out.push_back({"position_fix", "must be \"ngs\", \"baumgarte\" or \"none\""});
+    }
+    if (scene.positionCorrection) {
+        out.push_back({"position_correction", "belongs to the course model; the manifold model fixes positions "
+                                              "itself (\"position_fix\")"});
+    }
+    if (scene.planeContacts != PlaneContactMode::PerPoint) {
+        out.push_back({"plane_contacts", "belongs to the course model; the manifold model keeps every corner "
+                                         "below a plane as a point of its manifold"});
+    }
+}
+
+} // namespace rbw

@@ -1,0 +1,403 @@
+// The one catalogue of traced quantities: every number the physics records, with its
+// stable trace id, its stage, what its index counts, its symbol and formula in LaTeX, a
+// plain UTF-8 symbol for tables, its frame and its unit. The physics records entries
+// that point into this table (through the named handles of quantities.h); the trace,
+// the CLI (`rbw quantities`, JSON and CSV), the derivation templates and the app's table
+// all read it, and nothing else spells a quantity's id.
+//
+// A quantity that is computed with different formulas (by different integrators, with
+// or without gravity, in the two inertia conventions) has one row per formula: the rows
+// share the trace id and differ in their unique key, so a view shows the formula that
+// was actually used.
+//
+// Sources of the formulas: TUM Game Physics "Simulation Algorithm 3D" and the impulse
+// slides (docs/references.md §1, §3), the template's SAT (§2), Napier practicals (§4),
+// Hairer, Lubich & Wanner (sections II.1, IV.2, VII.5), Catto GDC 2015 (gyroscopic
+// term) - see docs/references.md.
+#pragma once
+
+#include "physics/engine/trace.h"
+
+#include <span>
+#include <string_view>
+
+namespace rbw {
+
+// clang-format off
+inline constexpr QuantityInfo kQuantityCatalogue[] = {
+    // --- forces stage (algorithm step 1) ---
+    {"gravity_force", "gravity_force", Stage::Forces, IndexKind::None, "M\\mathbf{g}", "M·g",
+     "\\mathbf{f}_g = M\\,\\mathbf{g}", Frame::World, "N"},
+    {"applied_force", "applied_force", Stage::Forces, IndexKind::Force, "\\mathbf{f}_i", "fᵢ",
+     "\\mathbf{f}_i", Frame::World, "N"},
+    {"application_point", "application_point", Stage::Forces, IndexKind::Force, "\\mathbf{p}_i", "pᵢ",
+     "\\mathbf{p}_i", Frame::World, "m"},
+    {"lever_arm", "lever_arm", Stage::Forces, IndexKind::Force, "\\mathbf{x}_i", "xᵢ",
+     "\\mathbf{x}_i = \\mathbf{p}_i - \\mathbf{x}", Frame::World, "m"},
+    {"force", "force", Stage::Forces, IndexKind::None, "\\mathbf{F}", "F",
+     "\\mathbf{F} = \\sum_i \\mathbf{f}_i", Frame::World, "N"},
+    {"force_with_gravity", "force", Stage::Forces, IndexKind::None, "\\mathbf{F}", "F",
+     "\\mathbf{F} = \\sum_i \\mathbf{f}_i + M\\,\\mathbf{g}", Frame::World, "N"},
+    {"applied_torque", "applied_torque", Stage::Forces, IndexKind::Torque, "\\mathbf{q}_j", "qⱼ",
+     "\\mathbf{q}_j", Frame::World, "N·m"},
+    {"torque_with_couples", "torque", Stage::Forces, IndexKind::None, "\\mathbf{q}", "q",
+     "\\mathbf{q} = \\sum_i \\mathbf{x}_i \\times \\mathbf{f}_i + \\sum_j \\mathbf{q}_j",
+     Frame::World, "N·m"},
+    {"torque", "torque", Stage::Forces, IndexKind::None, "\\mathbf{q}", "q",
+     "\\mathbf{q} = \\sum_i \\mathbf{x}_i \\times \\mathbf{f}_i", Frame::World, "N·m"},
+    // --- integration stage (explicit Euler, algorithm steps 2-7) ---
+    {"position", "position", Stage::Integration, IndexKind::None, "\\mathbf{x}", "x",
+     "\\mathbf{x} \\leftarrow \\mathbf{x} + h\\,\\mathbf{v}", Frame::World, "m"},
+    {"linear_velocity", "linear_velocity", Stage::Integration, IndexKind::None, "\\mathbf{v}", "v",
+     "\\mathbf{v} \\leftarrow \\mathbf{v} + h\\,\\mathbf{F}/M", Frame::World, "m/s"},
+    {"orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
+     "r \\leftarrow \\frac{r + \\frac{h}{2}\\,(0,\\boldsymbol{\\omega})\\,r}{\\lVert r + \\frac{h}{2}\\,(0,\\boldsymbol{\\omega})\\,r \\rVert}",
+     Frame::World, ""},
+    {"angular_momentum", "angular_momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
+     "\\mathbf{L} \\leftarrow \\mathbf{L} + h\\,\\mathbf{q}", Frame::World, "kg·m²/s"},
+    {"inertia_body", "inertia_body", Stage::Integration, IndexKind::None, "I_0", "I₀",
+     "I_0 = \\tfrac{M}{12}\\operatorname{diag}(b^2+c^2,\\ a^2+c^2,\\ a^2+b^2)", Frame::Body, "kg·m²"},
+    {"inverse_inertia_body", "inverse_inertia_body", Stage::Integration, IndexKind::None, "I_0^{-1}", "I₀⁻¹",
+     "I_0^{-1} = \\operatorname{diag}(1/I_{0,xx},\\ 1/I_{0,yy},\\ 1/I_{0,zz})",
+     Frame::Body, "1/(kg·m²)"},
+    {"rotation_matrix", "rotation_matrix", Stage::Integration, IndexKind::None, "R", "R",
+     "R = R(r)", Frame::World, ""},
+    {"inverse_inertia_world", "inverse_inertia_world", Stage::Integration, IndexKind::None, "I^{-1}", "I⁻¹",
+     "I^{-1} = R\\,I_0^{-1}\\,R^{\\mathsf{T}}", Frame::World, "1/(kg·m²)"},
+    {"inverse_inertia_world_template", "inverse_inertia_world", Stage::Integration, IndexKind::None, "I^{-1}", "I⁻¹",
+     "I^{-1} = R^{\\mathsf{T}}\\,I_0^{-1}\\,R", Frame::World, "1/(kg·m²)"},
+    {"angular_velocity", "angular_velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}", "ω",
+     "\\boldsymbol{\\omega} = I^{-1}\\,\\mathbf{L}", Frame::World, "rad/s"},
+    // --- probes (algorithm step 8) ---
+    {"probe_position", "probe_position", Stage::Probes, IndexKind::Probe, "\\mathbf{p}", "p",
+     "\\mathbf{p} = \\mathbf{x} + R\\,\\mathbf{p}_B", Frame::World, "m"},
+    {"point_velocity", "point_velocity", Stage::Probes, IndexKind::Probe, "\\mathbf{v}_p", "v_p",
+     "\\mathbf{v}_p = \\mathbf{v} + \\boldsymbol{\\omega} \\times (\\mathbf{p} - \\mathbf{x})",
+     Frame::World, "m/s"},
+    // --- collision stage (docs/references.md §2–§3) ---
+    // World-level broad-phase counts (body -1).
+    {"pairs_tested", "pairs_tested", Stage::Collision, IndexKind::None, "N_{\\text{tested}}", "N",
+     "\\text{AABB pairs tested by sweep-and-prune}", Frame::None, ""},
+    {"pairs_overlapping", "pairs_overlapping", Stage::Collision, IndexKind::None, "N_{\\text{overlap}}", "N",
+     "\\text{AABB pairs that overlap (sent to SAT)}", Frame::None, ""},
+    // Per contact (index = contact number).
+    {"contact_point", "point", Stage::Collision, IndexKind::Contact, "\\mathbf{p}", "p",
+     "\\mathbf{p}\\ \\text{(contact point)}", Frame::World, "m"},
+    {"contact_normal", "normal", Stage::Collision, IndexKind::Contact, "\\mathbf{n}", "n",
+     "\\mathbf{n}\\ \\text{(unit, from B to A)}", Frame::World, ""},
+    {"contact_depth", "depth", Stage::Collision, IndexKind::Contact, "d", "d",
+     "d\\ \\text{(penetration, not used by } J)", Frame::None, "m"},
+    {"x_a", "x_a", Stage::Collision, IndexKind::Contact, "\\mathbf{x}_a", "x_a",
+     "\\mathbf{x}_a = \\mathbf{p} - \\mathbf{x}_A", Frame::World, "m"},
+    {"x_b", "x_b", Stage::Collision, IndexKind::Contact, "\\mathbf{x}_b", "x_b",
+     "\\mathbf{x}_b = \\mathbf{p} - \\mathbf{x}_B", Frame::World, "m"},
+    {"velocity_a", "velocity_a", Stage::Collision, IndexKind::Contact, "\\mathbf{v}_A(\\mathbf{p})", "v_A(p)",
+     "\\mathbf{v}_A(\\mathbf{p}) = \\mathbf{v}_A + \\boldsymbol{\\omega}_A \\times \\mathbf{x}_a",
+     Frame::World, "m/s"},
+    {"velocity_b", "velocity_b", Stage::Collision, IndexKind::Contact, "\\mathbf{v}_B(\\mathbf{p})", "v_B(p)",
+     "\\mathbf{v}_B(\\mathbf{p}) = \\mathbf{v}_B + \\boldsymbol{\\omega}_B \\times \\mathbf{x}_b",
+     Frame::World, "m/s"},
+    {"relative_velocity", "relative_velocity", Stage::Collision, IndexKind::Contact, "\\mathbf{v}_{\\text{rel}}", "v_rel",
+     "\\mathbf{v}_{\\text{rel}} = \\mathbf{v}_A(\\mathbf{p}) - \\mathbf{v}_B(\\mathbf{p})",
+     Frame::World, "m/s"},
+    {"normal_velocity", "normal_velocity", Stage::Collision, IndexKind::Contact, "\\mathbf{v}_{\\text{rel}}\\cdot\\mathbf{n}", "v_rel·n",
+     "\\mathbf{v}_{\\text{rel}}\\cdot\\mathbf{n}\\ (> 0:\\ \\text{separating, no impulse})",
+     Frame::None, "m/s"},
+    {"restitution", "restitution", Stage::Collision, IndexKind::Contact, "c", "c",
+     "c\\ \\text{(coefficient of restitution)}", Frame::None, ""},
+    {"numerator", "numerator", Stage::Collision, IndexKind::Contact, "-(1+c)\\,\\mathbf{v}_{\\text{rel}}\\cdot\\mathbf{n}", "−(1+c) v_rel·n",
+     "-(1+c)\\,\\mathbf{v}_{\\text{rel}}\\cdot\\mathbf{n}",
+     Frame::None, "m/s"},
+    {"inv_mass_a", "inv_mass_a", Stage::Collision, IndexKind::Contact, "1/M_A", "1/M_A",
+     "1/M_A", Frame::None, "1/kg"},
+    {"inv_mass_b", "inv_mass_b", Stage::Collision, IndexKind::Contact, "1/M_B", "1/M_B",
+     "1/M_B\\ (0\\ \\text{if fixed})", Frame::None, "1/kg"},
+    {"rotational_a", "rotational_a", Stage::Collision, IndexKind::Contact, "[\\cdot]_A", "[(I_A⁻¹(x_a×n))×x_a]·n",
+     "\\big[(I_A^{-1}(\\mathbf{x}_a\\times\\mathbf{n}))\\times\\mathbf{x}_a\\big]\\cdot\\mathbf{n}",
+     Frame::None, "1/kg"},
+    {"rotational_b", "rotational_b", Stage::Collision, IndexKind::Contact, "[\\cdot]_B", "[(I_B⁻¹(x_b×n))×x_b]·n",
+     "\\big[(I_B^{-1}(\\mathbf{x}_b\\times\\mathbf{n}))\\times\\mathbf{x}_b\\big]\\cdot\\mathbf{n}",
+     Frame::None, "1/kg"},
+    {"denominator", "denominator", Stage::Collision, IndexKind::Contact, "k_n", "1/M_A + 1/M_B + [·]_A + [·]_B",
+     "\\tfrac{1}{M_A} + \\tfrac{1}{M_B} + [\\cdot]_A + [\\cdot]_B",
+     Frame::None, "1/kg"},
+    {"impulse", "impulse", Stage::Collision, IndexKind::Contact, "J", "J",
+     "J = \\frac{-(1+c)\\,\\mathbf{v}_{\\text{rel}}\\cdot\\mathbf{n}}{\\tfrac{1}{M_A} + \\tfrac{1}{M_B} + [\\cdot]_A + [\\cdot]_B}",
+     Frame::None, "N·s"},
+    {"friction_impulse", "friction_impulse", Stage::Collision, IndexKind::Contact, "J_t\\,\\mathbf{t}", "J_t t",
+     "J_t = \\min\\!\\Big(\\frac{|\\mathbf{v}_{\\text{rel},t}|}{\\tfrac{1}{M_A} + \\tfrac{1}{M_B} + [\\cdot]_{A,t} + [\\cdot]_{B,t}},\\ \\mu J\\Big)",
+     Frame::World, "N·s"},
+    {"friction_coefficient", "friction_coefficient", Stage::Collision, IndexKind::Contact, "\\mu", "μ",
+     "\\mu\\ \\text{(Coulomb friction coefficient)}", Frame::None, ""},
+    {"sliding", "sliding", Stage::Collision, IndexKind::Contact, "s", "sliding",
+     "s = 1\\ \\text{if}\\ J_t^{*} > \\mu J\\ \\text{(slides, } J_t = \\mu J),\\ 0\\ \\text{if it sticks}",
+     Frame::None, ""},
+    {"delta_v_a", "delta_v_a", Stage::Collision, IndexKind::Contact, "\\Delta\\mathbf{v}_A", "Δv_A",
+     "\\Delta\\mathbf{v}_A = (J\\,\\mathbf{n} + J_t\\mathbf{t})/M_A", Frame::World, "m/s"},
+    {"delta_v_b", "delta_v_b", Stage::Collision, IndexKind::Contact, "\\Delta\\mathbf{v}_B", "Δv_B",
+     "\\Delta\\mathbf{v}_B = -(J\\,\\mathbf{n} + J_t\\mathbf{t})/M_B", Frame::World, "m/s"},
+    {"delta_L_a", "delta_L_a", Stage::Collision, IndexKind::Contact, "\\Delta\\mathbf{L}_A", "ΔL_A",
+     "\\Delta\\mathbf{L}_A = \\mathbf{x}_a \\times (J\\,\\mathbf{n} + J_t\\mathbf{t})",
+     Frame::World, "kg·m²/s"},
+    {"delta_L_b", "delta_L_b", Stage::Collision, IndexKind::Contact, "\\Delta\\mathbf{L}_B", "ΔL_B",
+     "\\Delta\\mathbf{L}_B = -\\mathbf{x}_b \\times (J\\,\\mathbf{n} + J_t\\mathbf{t})",
+     Frame::World, "kg·m²/s"},
+    {"linear_velocity_a", "linear_velocity_a", Stage::Collision, IndexKind::Contact, "\\mathbf{v}_A'", "v_A'",
+     "\\mathbf{v}_A' = \\mathbf{v}_A + \\Delta\\mathbf{v}_A", Frame::World, "m/s"},
+    {"linear_velocity_b", "linear_velocity_b", Stage::Collision, IndexKind::Contact, "\\mathbf{v}_B'", "v_B'",
+     "\\mathbf{v}_B' = \\mathbf{v}_B + \\Delta\\mathbf{v}_B", Frame::World, "m/s"},
+    {"angular_momentum_a", "angular_momentum_a", Stage::Collision, IndexKind::Contact, "\\mathbf{L}_A'", "L_A'",
+     "\\mathbf{L}_A' = \\mathbf{L}_A + \\Delta\\mathbf{L}_A",
+     Frame::World, "kg·m²/s"},
+    {"angular_momentum_b", "angular_momentum_b", Stage::Collision, IndexKind::Contact, "\\mathbf{L}_B'", "L_B'",
+     "\\mathbf{L}_B' = \\mathbf{L}_B + \\Delta\\mathbf{L}_B",
+     Frame::World, "kg·m²/s"},
+    {"angular_velocity_a", "angular_velocity_a", Stage::Collision, IndexKind::Contact, "\\boldsymbol{\\omega}_A'", "ω_A'",
+     "\\boldsymbol{\\omega}_A' = I_A^{-1}\\,\\mathbf{L}_A'",
+     Frame::World, "rad/s"},
+    {"angular_velocity_b", "angular_velocity_b", Stage::Collision, IndexKind::Contact, "\\boldsymbol{\\omega}_B'", "ω_B'",
+     "\\boldsymbol{\\omega}_B' = I_B^{-1}\\,\\mathbf{L}_B'",
+     Frame::World, "rad/s"},
+    {"kinetic_energy_before", "kinetic_energy_before", Stage::Collision, IndexKind::Contact, "T", "T",
+     "T = \\sum_{A,B} \\tfrac12 M|\\mathbf{v}|^2 + \\tfrac12\\boldsymbol{\\omega}\\cdot\\mathbf{L}",
+     Frame::None, "J"},
+    {"kinetic_energy_after", "kinetic_energy_after", Stage::Collision, IndexKind::Contact, "T'", "T'",
+     "T' = \\sum_{A,B} \\tfrac12 M|\\mathbf{v}'|^2 + \\tfrac12\\boldsymbol{\\omega}'\\cdot\\mathbf{L}'",
+     Frame::None, "J"},
+    // --- correction stage: not part of the impulse formula ---
+    {"correction_a", "correction_a", Stage::Correction, IndexKind::Correction, "\\Delta\\mathbf{x}_A", "Δx_A",
+     "\\Delta\\mathbf{x}_A = d\\,\\mathbf{n}\\,\\frac{1/M_A}{1/M_A + 1/M_B}",
+     Frame::World, "m"},
+    {"correction_b", "correction_b", Stage::Correction, IndexKind::Correction, "\\Delta\\mathbf{x}_B", "Δx_B",
+     "\\Delta\\mathbf{x}_B = -d\\,\\mathbf{n}\\,\\frac{1/M_B}{1/M_A + 1/M_B}",
+     Frame::World, "m"},
+    // --- manifold contact model (contact_model "manifold"; physics/engine/manifold/, docs/collisions.md;
+    //     Catto GDC 2005/2006/2009, Box2D-lite, Ericson; docs/references.md) ---
+    // World-level counts (body -1).
+    {"manifold_points", "manifold_points", Stage::Collision, IndexKind::None, "N_{\\text{points}}", "N_points",
+     "\\text{manifold points this step (at most 8 per box pair or box and plane)}", Frame::None, ""},
+    {"solver_iterations_used", "solver_iterations", Stage::Collision, IndexKind::None, "n_{\\text{iter}}", "n_iter",
+     "n_{\\text{iter}}:\\ \\text{velocity iterations until}\\ \\max|\\Delta\\lambda| \\le \\varepsilon\\ \\text{(at most solver\\_iterations)}",
+     Frame::None, ""},
+    // Per manifold point (index = contact number; one ContactHeader per point).
+    {"manifold_point", "point", Stage::Collision, IndexKind::Contact, "\\mathbf{p}", "p",
+     "\\mathbf{p} = \\tfrac12(\\mathbf{p}_A + \\mathbf{p}_B)\\ \\text{(clipped manifold point)}", Frame::World, "m"},
+    {"manifold_normal", "normal", Stage::Collision, IndexKind::Contact, "\\mathbf{n}", "n",
+     "\\mathbf{n}\\ \\text{(reference face normal, unit, from B to A)}", Frame::World, ""},
+    {"manifold_depth", "depth", Stage::Collision, IndexKind::Contact, "d", "d",
+     "d = -\\mathbf{n}\\cdot(\\mathbf{p}_A - \\mathbf{p}_B)\\ \\ (d < 0:\\ \\text{apart, a speculative point})",
+     Frame::None, "m"},
+    {"feature_id", "feature_id", Stage::Collision, IndexKind::Contact, "\\text{id}", "id",
+     "\\text{feature id (reference face, incident face, clip lines; a corner for planes): the warm-start key}",
+     Frame::None, ""},
+    {"manifold_normal_velocity", "normal_velocity", Stage::Collision, IndexKind::Contact,
+     "\\mathbf{v}_{\\text{rel}}\\cdot\\mathbf{n}", "v_rel·n",
+     "v_n = \\big(\\mathbf{v}_A + \\boldsymbol{\\omega}_A\\times\\mathbf{r}_A - \\mathbf{v}_B - \\boldsymbol{\\omega}_B\\times\\mathbf{r}_B\\big)\\cdot\\mathbf{n}\\ \\text{(start of step)}",
+     Frame::None, "m/s"},
+    {"target_normal_velocity", "target_normal_velocity", Stage::Collision, IndexKind::Contact, "v_n^{*}", "v_n*",
+     "v_n^{*} = -c\\,v_n\\ \\text{if}\\ v_n < -v_{\\text{th}};\\ \\ -d/h\\ \\text{if apart};\\ \\ 0\\ \\text{otherwise}",
+     Frame::None, "m/s"},
+    {"target_normal_velocity_baumgarte", "target_normal_velocity", Stage::Collision, IndexKind::Contact, "v_n^{*}", "v_n*",
+     "v_n^{*} = \\max\\!\\big(v_{\\text{bounce}},\\ \\tfrac{\\beta}{h}\\max(0,\\ d - \\text{slop})\\big)\\ \\text{(Baumgarte)}",
+     Frame::None, "m/s"},
+    {"normal_mass", "normal_mass", Stage::Collision, IndexKind::Contact, "m_n", "m_n",
+     "m_n = \\Big(\\tfrac{1}{M_A} + \\tfrac{1}{M_B} + \\big[(I_A^{-1}(\\mathbf{r}_A\\times\\mathbf{n}))\\times\\mathbf{r}_A + (I_B^{-1}(\\mathbf{r}_B\\times\\mathbf{n}))\\times\\mathbf{r}_B\\big]\\cdot\\mathbf{n}\\Big)^{-1}",
+     Frame::None, "kg"},
+    {"warm_start_normal", "warm_start_normal", Stage::Collision, IndexKind::Contact, "\\lambda_n^{0}", "λn⁰",
+     "\\lambda_n^{0} = \\lambda_n\\ \\text{of last step's point with the same feature id (0 if none)}",
+     Frame::None, "N·s"},
+    {"warm_start_tangent", "warm_start_tangent", Stage::Collision, IndexKind::Contact, "\\boldsymbol{\\lambda}_t^{0}", "λt⁰",
+     "\\boldsymbol{\\lambda}_t^{0} = \\boldsymbol{\\lambda}_t\\ \\text{of last step's point, projected on this step's tangent plane}",
+     Frame::World, "N·s"},
+    {"normal_impulse", "normal_impulse", Stage::Collision, IndexKind::Contact, "\\lambda_n", "λn",
+     "\\lambda_n \\leftarrow \\max\\!\\big(0,\\ \\lambda_n + m_n(v_n^{*} - v_n)\\big)\\ \\text{(accumulated over the iterations)}",
+     Frame::None, "N·s"},
+    {"tangent_impulse", "tangent_impulse", Stage::Collision, IndexKind::Contact, "\\boldsymbol{\\lambda}_t", "λt",
+     "\\boldsymbol{\\lambda}_t \\leftarrow \\boldsymbol{\\lambda}_t - m_t\\mathbf{v}_t,\\ \\text{then scaled to}\\ |\\boldsymbol{\\lambda}_t| \\le \\mu\\lambda_n\\ \\text{(accumulated)}",
+     Frame::World, "N·s"},
+    // Per body (index -1).
+    {"contact_force", "contact_force", Stage::Collision, IndexKind::None, "\\mathbf{F}_c", "F_c",
+     "\\mathbf{F}_c = \\tfrac1h\\sum \\mathbf{P}\\ \\text{(the solver's impulses on the body, added to}\\ \\mathbf{F})",
+     Frame::World, "N"},
+    {"contact_torque", "contact_torque", Stage::Collision, IndexKind::None, "\\mathbf{q}_c", "q_c",
+     "\\mathbf{q}_c = \\tfrac1h\\sum \\mathbf{r}\\times\\mathbf{P}\\ \\text{(added to}\\ \\mathbf{q})",
+     Frame::World, "N·m"},
+    {"sleep_contact_force", "contact_force", Stage::Collision, IndexKind::None, "\\mathbf{F}_c", "F_c",
+     "\\mathbf{F}_c = -\\mathbf{F}\\ \\text{(asleep: the support holds the body still)}", Frame::World, "N"},
+    {"sleep_contact_torque", "contact_torque", Stage::Collision, IndexKind::None, "\\mathbf{q}_c", "q_c",
+     "\\mathbf{q}_c = -\\mathbf{q}\\ \\text{(asleep)}", Frame::World, "N·m"},
+    {"sleep_time", "sleep_time", Stage::Correction, IndexKind::None, "t_{\\text{rest}}", "t_rest",
+     "t_{\\text{rest}} \\leftarrow t_{\\text{rest}} + h\\ \\text{if}\\ |\\mathbf{v}| \\le v_{\\text{sleep}}\\ \\text{and}\\ |\\boldsymbol{\\omega}| \\le \\omega_{\\text{sleep}},\\ \\text{else}\\ 0",
+     Frame::None, "s"},
+    {"asleep", "asleep", Stage::Correction, IndexKind::None, "s", "asleep",
+     "s = 1\\ \\text{if the body's island rested}\\ t_{\\text{rest}} \\ge t_{\\text{sleep}}\\ \\text{(}\\mathbf{v} = \\mathbf{L} = 0\\text{)},\\ 0\\ \\text{awake}",
+     Frame::None, ""},
+    // Position fix (non-linear Gauss-Seidel), per body and world-level.
+    {"ngs_correction", "correction_a", Stage::Correction, IndexKind::Correction, "\\Delta\\mathbf{x}_A", "Δx_A",
+     "\\Delta\\mathbf{x}_A = \\sum \\tfrac{1}{M_A}P\\,\\mathbf{n},\\ P = -C/K,\\ C = \\operatorname{clamp}(\\beta(s + \\text{slop}),\\ -C_{\\max},\\ 0)\\ \\text{(NGS)}",
+     Frame::World, "m"},
+    {"deepest_overlap", "deepest_overlap", Stage::Correction, IndexKind::None, "d_{\\max}", "d_max",
+     "d_{\\max} = \\max\\big(0,\\ \\max_{\\text{points}} -s\\big)\\ \\text{after the position fix}", Frame::None, "m"},
+    // --- shared by several integrators ---
+    {"gyroscopic_skipped", "gyroscopic_skipped", Stage::Integration, IndexKind::None, "I_0 = k\\,E", "I₀ = k·E",
+     "I_0 = k\\,E \\;\\Rightarrow\\; \\boldsymbol{\\omega}\\times I_0\\boldsymbol{\\omega} = 0\\ \\text{(gyroscopic work skipped)}",
+     Frame::Body, ""},
+    // --- symplectic Euler: velocities first, then positions with the new ones ---
+    {"se_linear_velocity", "linear_velocity", Stage::Integration, IndexKind::None, "\\mathbf{v}", "v",
+     "\\mathbf{v}_{n+1} = \\mathbf{v}_n + h\\,\\mathbf{F}/M", Frame::World, "m/s"},
+    {"se_position", "position", Stage::Integration, IndexKind::None, "\\mathbf{x}", "x",
+     "\\mathbf{x}_{n+1} = \\mathbf{x}_n + h\\,\\mathbf{v}_{n+1}", Frame::World, "m"},
+    {"se_angular_momentum", "angular_momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
+     "\\mathbf{L}_{n+1} = \\mathbf{L}_n + h\\,\\mathbf{q}", Frame::World, "kg·m²/s"},
+    {"update_angular_velocity", "update_angular_velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}'", "ω'",
+     "\\boldsymbol{\\omega}' = I^{-1}(r_n)\\,\\mathbf{L}_{n+1}",
+     Frame::World, "rad/s"},
+    {"se_orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
+     "r_{n+1} = \\frac{r_n + \\frac{h}{2}(0,\\boldsymbol{\\omega}')\\,r_n}{\\lVert\\cdot\\rVert}",
+     Frame::World, ""},
+    // --- explicit Runge-Kutta (midpoint, RK4) on y = (x, r, P, L) ---
+    {"stage_velocity", "stage_velocity", Stage::Integration, IndexKind::RkStage, "\\mathbf{k}_{x,i}", "k_x,i",
+     "\\mathbf{k}_{x,i} = \\dot{\\mathbf{x}}(Y_i) = \\mathbf{v}_i",
+     Frame::World, "m/s"},
+    {"stage_angular_velocity", "stage_angular_velocity", Stage::Integration, IndexKind::RkStage, "\\boldsymbol{\\omega}_i", "ω_i",
+     "\\boldsymbol{\\omega}_i = I^{-1}(r_i)\\,\\mathbf{L}_i",
+     Frame::World, "rad/s"},
+    {"stage_orientation_rate", "stage_orientation_rate", Stage::Integration, IndexKind::RkStage, "k_{r,i}", "k_r,i",
+     "k_{r,i} = \\dot r(Y_i) = \\tfrac12\\,(0,\\boldsymbol{\\omega}_i)\\,r_i",
+     Frame::World, "1/s"},
+    {"stage_torque", "stage_torque", Stage::Integration, IndexKind::RkStage, "\\mathbf{k}_{L,i}", "k_L,i",
+     "\\mathbf{k}_{L,i} = \\dot{\\mathbf{L}}(Y_i) = \\mathbf{q}", Frame::World, "N·m"},
+    {"midpoint_position", "position", Stage::Integration, IndexKind::None, "\\mathbf{x}", "x",
+     "\\mathbf{x}_{n+1} = \\mathbf{x}_n + h\\,\\mathbf{k}_{x,2}", Frame::World, "m"},
+    {"midpoint_linear_velocity", "linear_velocity", Stage::Integration, IndexKind::None, "\\mathbf{v}", "v",
+     "\\mathbf{v}_{n+1} = \\mathbf{v}_n + h\\,\\mathbf{F}/M", Frame::World, "m/s"},
+    {"midpoint_orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
+     "r_{n+1} = \\frac{r_n + h\\,k_{r,2}}{\\lVert\\cdot\\rVert}", Frame::World, ""},
+    {"midpoint_angular_momentum", "angular_momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
+     "\\mathbf{L}_{n+1} = \\mathbf{L}_n + h\\,\\mathbf{k}_{L,2}",
+     Frame::World, "kg·m²/s"},
+    {"rk4_position", "position", Stage::Integration, IndexKind::None, "\\mathbf{x}", "x",
+     "\\mathbf{x}_{n+1} = \\mathbf{x}_n + \\tfrac{h}{6}(\\mathbf{k}_{x,1} + 2\\mathbf{k}_{x,2} + 2\\mathbf{k}_{x,3} + \\mathbf{k}_{x,4})",
+     Frame::World, "m"},
+    {"rk4_linear_velocity", "linear_velocity", Stage::Integration, IndexKind::None, "\\mathbf{v}", "v",
+     "\\mathbf{v}_{n+1} = \\mathbf{v}_n + h\\,\\mathbf{F}/M", Frame::World, "m/s"},
+    {"rk4_orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
+     "r_{n+1} = \\frac{r_n + \\frac{h}{6}(k_{r,1} + 2k_{r,2} + 2k_{r,3} + k_{r,4})}{\\lVert\\cdot\\rVert}",
+     Frame::World, ""},
+    {"rk4_angular_momentum", "angular_momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
+     "\\mathbf{L}_{n+1} = \\mathbf{L}_n + \\tfrac{h}{6}(\\mathbf{k}_{L,1} + 2\\mathbf{k}_{L,2} + 2\\mathbf{k}_{L,3} + \\mathbf{k}_{L,4})",
+     Frame::World, "kg·m²/s"},
+    // --- implicit gyroscopic (Catto GDC 2015; Bullet computeGyroscopicImpulseImplicit_Body) ---
+    {"body_angular_velocity", "body_angular_velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}_B", "ω_B",
+     "\\boldsymbol{\\omega}_B = R^{\\mathsf{T}}\\boldsymbol{\\omega}",
+     Frame::Body, "rad/s"},
+    {"gyroscopic_jacobian", "gyroscopic_jacobian", Stage::Integration, IndexKind::None, "J", "J",
+     "J = I_0 + h\\,\\big([\\boldsymbol{\\omega}_B]_\\times I_0 - [I_0\\boldsymbol{\\omega}_B]_\\times\\big)",
+     Frame::Body, "kg·m²"},
+    {"body_angular_velocity_new", "body_angular_velocity_new", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}_B'", "ω_B'",
+     "\\boldsymbol{\\omega}_B' = \\boldsymbol{\\omega}_B - J^{-1}\\,h\\,\\boldsymbol{\\omega}_B\\times I_0\\boldsymbol{\\omega}_B",
+     Frame::Body, "rad/s"},
+    {"newton_iterations", "newton_iterations", Stage::Integration, IndexKind::None, "n_{\\text{Newton}}", "n",
+     "n_{\\text{Newton}}\\ \\text{(Newton updates taken)}", Frame::None, ""},
+    {"gyroscopic_residual", "newton_residual", Stage::Integration, IndexKind::None, "\\lVert\\mathbf{g}\\rVert", "|g|",
+     "\\mathbf{g} = I_0(\\boldsymbol{\\omega}_B' - \\boldsymbol{\\omega}_B) + h\\,\\boldsymbol{\\omega}_B'\\times I_0\\boldsymbol{\\omega}_B'",
+     Frame::None, "kg·m²/s"},
+    {"gyroscopic_angular_velocity", "update_angular_velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}'", "ω'",
+     "\\boldsymbol{\\omega}' = R\\,\\boldsymbol{\\omega}_B' + h\\,I^{-1}\\mathbf{q}",
+     Frame::World, "rad/s"},
+    {"gyroscopic_angular_momentum", "angular_momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
+     "\\mathbf{L}_{n+1} = R_{n+1} I_0 R_{n+1}^{\\mathsf{T}}\\,\\boldsymbol{\\omega}'",
+     Frame::World, "kg·m²/s"},
+    // --- implicit midpoint (Lie-Poisson form in the body frame + Cayley rotation) ---
+    {"body_angular_momentum", "body_angular_momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}_B", "L_B",
+     "\\mathbf{L}_B = R^{\\mathsf{T}}\\mathbf{L}", Frame::Body, "kg·m²/s"},
+    {"body_angular_momentum_new", "body_angular_momentum_new", Stage::Integration, IndexKind::None, "\\mathbf{L}_B'", "L_B'",
+     "\\mathbf{L}_B' = \\mathbf{L}_B - h\\,\\boldsymbol{\\omega}_m\\times\\mathbf{L}_m,\\ \\mathbf{L}_m = \\tfrac12(\\mathbf{L}_B + \\mathbf{L}_B'),\\ \\boldsymbol{\\omega}_m = I_0^{-1}\\mathbf{L}_m",
+     Frame::Body, "kg·m²/s"},
+    {"midpoint_body_angular_velocity", "midpoint_angular_velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}_m", "ω_m",
+     "\\boldsymbol{\\omega}_m = I_0^{-1}\\,\\tfrac12(\\mathbf{L}_B + \\mathbf{L}_B')",
+     Frame::Body, "rad/s"},
+    {"midpoint_world_angular_velocity", "midpoint_angular_velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}_m", "ω_m",
+     "\\boldsymbol{\\omega}_m = I^{-1}(r_m)\\,\\mathbf{L},\\ r_m = \\tfrac12(r_n + r_{n+1})",
+     Frame::World, "rad/s"},
+    {"midpoint_newton_residual", "newton_residual", Stage::Integration, IndexKind::None, "\\lVert\\mathbf{G}\\rVert", "|G|",
+     "\\mathbf{G} = \\mathbf{L}_B' - \\mathbf{L}_B + h\\,\\boldsymbol{\\omega}_m\\times\\mathbf{L}_m",
+     Frame::None, "kg·m²/s"},
+    {"fixed_point_iterations", "newton_iterations", Stage::Integration, IndexKind::None, "n_{\\text{iter}}", "n",
+     "n_{\\text{iter}}\\ \\text{(fixed-point iterations on } \\boldsymbol{\\omega}_m)",
+     Frame::None, ""},
+    {"fixed_point_residual", "newton_residual", Stage::Integration, IndexKind::None, "\\lVert\\Delta\\boldsymbol{\\omega}_m\\rVert", "|Δω_m|",
+     "\\lVert\\boldsymbol{\\omega}_m^{(k+1)} - \\boldsymbol{\\omega}_m^{(k)}\\rVert",
+     Frame::None, "rad/s"},
+    {"cayley_rotation", "cayley_rotation", Stage::Integration, IndexKind::None, "c", "c",
+     "c = \\frac{(1,\\ \\tfrac{h}{2}\\boldsymbol{\\omega}_m)}{\\lVert(1,\\ \\tfrac{h}{2}\\boldsymbol{\\omega}_m)\\rVert} \\;=\\; \\operatorname{cay}(h[\\boldsymbol{\\omega}_m]_\\times)",
+     Frame::Body, ""},
+    {"cayley_orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
+     "r_{n+1} = r_n\\,c", Frame::World, ""},
+    {"cayley_world_orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
+     "r_{n+1} = r_n + \\tfrac{h}{2}(0,\\boldsymbol{\\omega}_m)\\,\\tfrac12(r_n + r_{n+1})",
+     Frame::World, ""},
+    {"half_kick_angular_momentum", "angular_momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
+     "\\mathbf{L}_{n+1} = \\mathbf{L}_n + \\tfrac{h}{2}\\mathbf{q} + \\tfrac{h}{2}\\mathbf{q}",
+     Frame::World, "kg·m²/s"},
+    {"verlet_position", "position", Stage::Integration, IndexKind::None, "\\mathbf{x}", "x",
+     "\\mathbf{x}_{n+1} = \\mathbf{x}_n + h\\,(\\mathbf{v}_n + \\tfrac{h}{2}\\mathbf{F}/M)",
+     Frame::World, "m"},
+    {"verlet_linear_velocity", "linear_velocity", Stage::Integration, IndexKind::None, "\\mathbf{v}", "v",
+     "\\mathbf{v}_{n+1} = \\mathbf{v}_n + \\tfrac{h}{2}\\mathbf{F}/M + \\tfrac{h}{2}\\mathbf{F}/M",
+     Frame::World, "m/s"},
+    // --- rotation matrix (Napier practical 6) ---
+    {"rotation_matrix_update", "rotation_matrix_update", Stage::Integration, IndexKind::None, "R + h[\\boldsymbol{\\omega}]_\\times R", "R + h[ω]×R",
+     "R_{n+1} = R_n + h\\,[\\boldsymbol{\\omega}_n]_\\times R_n",
+     Frame::World, ""},
+    {"orthonormality_error_before", "orthonormality_error_before", Stage::Integration, IndexKind::None, "\\lVert R^{\\mathsf{T}}R - E\\rVert_F", "‖RᵀR − E‖ (before)",
+     "\\lVert R^{\\mathsf{T}}R - E\\rVert_F\\ \\text{of}\\ R_n + h[\\boldsymbol{\\omega}]_\\times R_n",
+     Frame::None, ""},
+    {"polar_rotation_matrix", "rotation_matrix", Stage::Integration, IndexKind::None, "R", "R",
+     "R \\leftarrow U V^{\\mathsf{T}},\\ U\\Sigma V^{\\mathsf{T}} = R_n + h[\\boldsymbol{\\omega}]_\\times R_n\\ \\text{(nearest rotation)}",
+     Frame::World, ""},
+    {"drifting_rotation_matrix", "rotation_matrix", Stage::Integration, IndexKind::None, "R", "R",
+     "R \\leftarrow R_n + h[\\boldsymbol{\\omega}]_\\times R_n\\ \\text{(not orthonormalised)}",
+     Frame::World, ""},
+    {"orthonormality_error", "orthonormality_error", Stage::Integration, IndexKind::None, "\\lVert R^{\\mathsf{T}}R - E\\rVert_F", "‖RᵀR − E‖",
+     "\\lVert R^{\\mathsf{T}}R - E\\rVert_F",
+     Frame::None, ""},
+    {"rotation_determinant", "rotation_determinant", Stage::Integration, IndexKind::None, "\\det R", "det R",
+     "\\det R\\ (1\\ \\text{for a rotation})", Frame::None, ""},
+    {"orientation_from_matrix", "orientation", Stage::Integration, IndexKind::None, "r", "r",
+     "r = r(R)\\ \\text{(read from } R\\text{, normalised)}", Frame::World, ""},
+};
+// clang-format on
+
+// Every row of the catalogue, in table order.
+constexpr std::span<const QuantityInfo> quantityCatalogue() { return kQuantityCatalogue; }
+
+// The first row with this trace id (the rows of one id share symbol, frame and unit);
+// nullptr for an id that is not in the catalogue.
+const QuantityInfo* findQuantity(std::string_view id);
+inline bool isQuantityId(std::string_view id) { return findQuantity(id) != nullptr; }
+
+namespace detail {
+
+// The row with this key, at compile time: a key that is not in the table does not compile.
+consteval const QuantityInfo& catalogueEntry(std::string_view key)
+{
+    for (const QuantityInfo& q : kQuantityCatalogue) {
+        if (std::string_view(q.key) == key) return q;
+    }
+    throw "quantity key not in the catalogue";
+}
+
+consteval bool catalogueKeysUnique()
+{
+    for (size_t i = 0; i < std::size(kQuantityCatalogue); ++i) {
+        for (size_t j = i + 1; j < std::size(kQuantityCatalogue); ++j) {
+            if (std::string_view(kQuantityCatalogue[i].key) == kQuantityCatalogue[j].key) return false;
+        }
+    }
+    return true;
+}
+static_assert(catalogueKeysUnique(), "every catalogue row needs its own key");
+
+} // namespace detail
+} // namespace rbw

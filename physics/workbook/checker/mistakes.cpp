@@ -1,0 +1,249 @@
+#include "physics/workbook/checker/mistakes.h"
+
+#include "physics/engine/inertia.h"
+#include "physics/engine/quantities.h"
+
+#include <cmath>
+
+namespace rbw {
+
+const std::vector<MistakeInfo>& mistakeCatalogue()
+{
+    static const std::vector<MistakeInfo> all = {
+        {Mistake::VelocityBeforePosition, "velocity-before-position", "x <- x + h v_{n+1}",
+         "The position was moved with the new velocity; step 2 uses the old one: x <- x + h v_n."},
+        {Mistake::OmegaBeforeOrientation, "omega-before-orientation", "r <- r + h/2 (0, omega_{n+1}) r",
+         "The orientation was turned with the new omega; step 4 uses the old one: r <- r + h/2 (0, omega_n) r."},
+        {Mistake::TransposedInertia, "transposed-inertia", "I^-1 = R^T I0^-1 R",
+         "The inverse inertia was rotated the wrong way round; the world frame needs I^-1 = R I0^-1 R^T."},
+        {Mistake::BodyInverseInertia, "body-inverse-inertia", "omega = I0^-1 L",
+         "omega was computed with the body-frame inverse inertia; rotate it to the world first: omega = R I0^-1 R^T L."},
+        {Mistake::InertiaNotInverted, "inertia-not-inverted", "omega = I L",
+         "omega was computed with the inertia instead of its inverse: omega = I^-1 L."},
+        {Mistake::TorqueReversed, "torque-reversed", "q = f x (p - x)",
+         "The cross product is the wrong way round; the torque is q = (p - x) x f."},
+        {Mistake::LeverArmFromOrigin, "lever-arm-from-origin", "q = p x f",
+         "The lever arm was taken from the world origin; it starts at the centre of mass: q = (p - x) x f."},
+        {Mistake::MissingTimeStep, "missing-time-step", "L <- L + q,  v <- v + F/M",
+         "The change over the step was not multiplied by h: L <- L + h q, v <- v + h F/M."},
+        {Mistake::QuaternionMissingHalf, "quaternion-missing-half", "r <- r + h (0, omega) r",
+         "The quaternion update lacks the factor 1/2: r <- r + (h/2) (0, omega) r."},
+        {Mistake::QuaternionNotNormalised, "quaternion-not-normalised", "r <- r + h/2 (0, omega) r, |r| != 1",
+         "The orientation was not renormalised after its update: r <- r / |r|."},
+        {Mistake::HalfExtentsForSize, "half-extents-for-size", "I0 = M/12 diag((b/2)^2 + (c/2)^2, ...)",
+         "The 1/12 formula takes the full edge lengths a, b, c, not the half extents."},
+        {Mistake::PointVelocityWithoutRotation, "point-velocity-without-rotation", "v_p = v",
+         "A point of a spinning body also moves with the rotation: v_p = v + omega x (p - x)."},
+        {Mistake::RelativeVelocityReversed, "relative-velocity-reversed", "v_rel = v_B(p) - v_A(p)",
+         "The relative velocity is A's minus B's, v_rel = v_A(p) - v_B(p), with n pointing from B to A."},
+        {Mistake::ImpulseLinearOnly, "impulse-linear-only", "J = -(1 + c) v_rel.n / (1/M_A + 1/M_B)",
+         "The denominator lacks the rotational terms [(I^-1 (x x n)) x x] . n of both bodies."},
+        {Mistake::ImpulseWithoutOnePlus, "impulse-without-one-plus", "J = -c v_rel.n / (...)",
+         "The numerator is -(1 + c) v_rel.n: the impulse first stops the approach, then c of it bounces back."},
+    };
+    return all;
+}
+
+const MistakeInfo* findMistake(std::string_view id)
+{
+    for (const MistakeInfo& m : mistakeCatalogue()) {
+        if (id == m.id) return &m;
+    }
+    return nullptr;
+}
+
+namespace {
+
+// --- the mistakes, one small function each ---
+
+// I0 = M/12 diag(b^2 + c^2, a^2 + c^2, a^2 + b^2); half-extents-for-size puts a/2, b/2, c/2 in.
+Mat3 bodyInertia(const Vec3& size, double M, Mistake m)
+{
+    return boxInertiaBody(m == Mistake::HalfExtentsForSize ? Vec3(0.5 * size) : size, M);
+}
+
+// q_i = (p_i - x) x f_i;  torque-reversed: f_i x (p_i - x);  lever-arm-from-origin: p_i x f_i
+Vec3 torqueOf(const Vec3& p, const Vec3& f, const Vec3& x, Mistake m)
+{
+    if (m == Mistake::TorqueReversed) return f.cross(p - x);
+    if (m == Mistake::LeverArmFromOrigin) return p.cross(f);
+    return (p - x).cross(f);
+}
+
+// h, or 1 for missing-time-step (L <- L + q, v <- v + F/M)
+double stepFactor(double h, Mistake m)
+{
+    return m == Mistake::MissingTimeStep ? 1.0 : h;
+}
+
+// r <- r + (h/2) (0, omega) r, normalised; quaternion-missing-half: h instead of h/2;
+// quaternion-not-normalised: no normalisation
+Quat turned(const Quat& r, const Vec3& omega_W, double h, Mistake m)
+{
+    const double a = m == Mistake::QuaternionMissingHalf ? h : 0.5 * h;
+    const Quat rDot = Quat(0.0, omega_W.x(), omega_W.y(), omega_W.z()) * r;
+    Quat out = r;
+    out.coeffs() += a * rDot.coeffs();
+    if (m != Mistake::QuaternionNotNormalised) out.coeffs() /= out.coeffs().norm();
+    return out;
+}
+
+// I^-1 = R I0^-1 R^T in the body's convention; transposed-inertia: the other way round
+Mat3 worldInverseInertia(const Mat3& R, const Mat3& I0inv, InertiaConvention c, Mistake m)
+{
+    if (m == Mistake::TransposedInertia) {
+        c = c == InertiaConvention::Standard ? InertiaConvention::CourseTemplate : InertiaConvention::Standard;
+    }
+    return inverseInertiaWorld(R, I0inv, c);
+}
+
+// omega = I^-1 L;  body-inverse-inertia: I0^-1 L;  inertia-not-inverted: I L, I = R I0 R^T
+Vec3 angularVelocity(const Mat3& Iinv_W, const Mat3& R, const Mat3& I0, const Mat3& I0inv, const Vec3& L,
+                     Mistake m)
+{
+    if (m == Mistake::BodyInverseInertia) return I0inv * L;
+    if (m == Mistake::InertiaNotInverted) return Mat3(R * I0 * R.transpose()) * L;
+    return Iinv_W * L;
+}
+
+// v_p = v + omega x (p - x);  point-velocity-without-rotation: v
+Vec3 pointVelocityOf(const Vec3& v, const Vec3& omega, const Vec3& p, const Vec3& x, Mistake m)
+{
+    if (m == Mistake::PointVelocityWithoutRotation) return v;
+    return v + omega.cross(p - x);
+}
+
+} // namespace
+
+HandEulerStep handEulerStep(const BodyStepInputs& in, Mistake m)
+{
+    HandEulerStep s;
+    const double M = in.mass;
+    s.I0_B = bodyInertia(in.size, M, m);
+    s.I0inv_B = Mat3::Zero();
+    for (int i = 0; i < 3; ++i) s.I0inv_B(i, i) = 1.0 / s.I0_B(i, i);
+
+    // The start of the step: R, I^-1 and omega of r_n and L_n (these carry no mistake of
+    // this step: the student checks one step from the workbook's state).
+    const Mat3 R0 = in.q_WB.toRotationMatrix();
+    const Mat3 I0inv_true = [&] {
+        const Mat3 I0 = boxInertiaBody(in.size, M);
+        Mat3 inv = Mat3::Zero();
+        for (int i = 0; i < 3; ++i) inv(i, i) = 1.0 / I0(i, i);
+        return inv;
+    }();
+    const Mat3 Iinv0 = inverseInertiaWorld(R0, I0inv_true, in.convention);
+    const Vec3 omega0 = Iinv0 * in.L_W;
+
+    // Step 1: F = sum f_i + M g,  q = sum (p_i - x) x f_i + sum q_j
+    s.F_W = M * in.g_W;
+    s.q_W = in.couple_W;
+    for (const auto& [p, f] : in.forces) {
+        s.F_W += f;
+        s.q_W += torqueOf(p, f, in.x_W, m);
+    }
+    const double hs = stepFactor(in.h, m);
+    // Step 3 (needed by a student who moves x with the new v): v <- v + h F/M
+    s.v_W = in.v_W + (hs / M) * s.F_W;
+    // Step 2: x <- x + h v_n
+    s.x_W = in.x_W + in.h * (m == Mistake::VelocityBeforePosition ? s.v_W : in.v_W);
+    // Step 5: L <- L + h q
+    s.L_W = in.L_W + hs * s.q_W;
+    // Step 4: r <- r + h/2 (0, omega_n) r, normalised
+    const Vec3 omegaUsed =
+        m == Mistake::OmegaBeforeOrientation ? Vec3(Iinv0 * s.L_W) : omega0;   // new omega: I^-1(r_n) L_{n+1}
+    s.q_WB = turned(in.q_WB, omegaUsed, in.h, m);
+    // Steps 6-7: R = R(r), I^-1 = R I0^-1 R^T, omega = I^-1 L
+    s.R_WB = s.q_WB.toRotationMatrix();
+    s.Iinv_W = worldInverseInertia(s.R_WB, s.I0inv_B, in.convention, m);
+    s.omega_W = angularVelocity(s.Iinv_W, s.R_WB, s.I0_B, s.I0inv_B, s.L_W, m);
+    // Step 8: p = x + R p_B,  v_p = v + omega x (p - x)
+    for (const Vec3& p_B : in.probes_B) {
+        const Vec3 p = s.x_W + s.R_WB * p_B;
+        s.probe_W.push_back(p);
+        s.probeVelocity_W.push_back(pointVelocityOf(s.v_W, s.omega_W, p, s.x_W, m));
+    }
+    return s;
+}
+
+bool HandEulerStep::value(std::string_view id, int index, TraceValue& out) const
+{
+    const std::pair<const QuantityInfo*, TraceValue> rows[] = {
+        {&q::inertia_body, I0_B},       {&q::inverse_inertia_body, I0inv_B},
+        {&q::force, F_W},               {&q::torque, q_W},
+        {&q::position, x_W},            {&q::linear_velocity, v_W},
+        {&q::orientation, q_WB},        {&q::angular_momentum, L_W},
+        {&q::rotation_matrix, R_WB},    {&q::inverse_inertia_world, Iinv_W},
+        {&q::angular_velocity, omega_W},
+    };
+    for (const auto& [info, v] : rows) {
+        if (id == info->id) {
+            out = v;
+            return true;
+        }
+    }
+    if (index >= 0 && index < static_cast<int>(probe_W.size())) {
+        if (id == q::probe_position.id) {
+            out = probe_W[index];
+            return true;
+        }
+        if (id == q::point_velocity.id) {
+            out = probeVelocity_W[index];
+            return true;
+        }
+    }
+    return false;
+}
+
+HandImpulse handImpulse(const ContactInputs& in, Mistake m)
+{
+    HandImpulse r;
+    const Vec3& n = in.g.n_W;
+    // x_a = p - x_A,  x_b = p - x_B
+    r.x_a = in.g.p_W - in.x_A;
+    r.x_b = in.g.p_W - in.x_B;
+    // v_A(p) = v_A + omega_A x x_a (and B)
+    r.velocity_a = in.v_A + in.omega_A.cross(r.x_a);
+    r.velocity_b = in.v_B + in.omega_B.cross(r.x_b);
+    // v_rel = v_A(p) - v_B(p);  relative-velocity-reversed: v_B(p) - v_A(p)
+    r.v_rel = m == Mistake::RelativeVelocityReversed ? Vec3(r.velocity_b - r.velocity_a)
+                                                     : Vec3(r.velocity_a - r.velocity_b);
+    r.v_rel_n = r.v_rel.dot(n);
+    // numerator -(1 + c) v_rel.n;  impulse-without-one-plus: -c v_rel.n
+    const double bounce = m == Mistake::ImpulseWithoutOnePlus ? in.restitution : 1.0 + in.restitution;
+    r.numerator = -bounce * r.v_rel_n;
+    // 1/M_A + 1/M_B + [(I_A^-1 (x_a x n)) x x_a] . n + [...]_B;  impulse-linear-only: 1/M_A + 1/M_B
+    r.denominator = in.invM_A + in.invM_B;
+    if (m != Mistake::ImpulseLinearOnly) {
+        r.denominator += (in.Iinv_A * r.x_a.cross(n)).cross(r.x_a).dot(n) +
+                         (in.Iinv_B * r.x_b.cross(n)).cross(r.x_b).dot(n);
+    }
+    // J = numerator / denominator; no impulse when separating (v_rel . n > 0), unless the
+    // student's own v_rel says otherwise
+    r.J = (m == Mistake::None && r.v_rel_n > 0.0) ? 0.0 : r.numerator / r.denominator;
+    return r;
+}
+
+bool HandImpulse::value(std::string_view id, TraceValue& out) const
+{
+    const std::pair<const QuantityInfo*, TraceValue> rows[] = {
+        {&q::x_a, x_a},
+        {&q::x_b, x_b},
+        {&q::velocity_a, velocity_a},
+        {&q::velocity_b, velocity_b},
+        {&q::relative_velocity, v_rel},
+        {&q::normal_velocity, v_rel_n},
+        {&q::numerator, numerator},
+        {&q::denominator, denominator},
+        {&q::impulse, J},
+    };
+    for (const auto& [info, v] : rows) {
+        if (id == info->id) {
+            out = v;
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace rbw

@@ -1,0 +1,116 @@
+// Mistake models (issue 10): each one recomputes a quantity of a step from the same
+// inputs the way a student who makes that mistake would, so that a checker can name
+// the mistake a wrong number shows. They model hand calculations of the course's
+// algorithms: one explicit Euler step in the TUM order (docs/references.md §1) and
+// one contact impulse (§3). Every model is one small function with its equation;
+// handEulerStep() and handImpulse() run the whole hand calculation with one mistake
+// switched on, so a model also gives every later quantity the mistake carries into
+// (a wrong I^-1 gives a wrong omega).
+//
+// Glossary: as physics/engine/body.h and physics/engine/course/impulse.h. The step's inputs are
+// the values at its start (x, v, r, L of the body, its forces f_i at p_i), h and the
+// body's mass properties and size.
+#pragma once
+
+#include "physics/engine/body.h"
+#include "physics/engine/collision/contact.h"
+#include "physics/engine/trace.h"
+
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace rbw {
+
+enum class Mistake {
+    None,
+    VelocityBeforePosition,       // x <- x + h v_{n+1}
+    OmegaBeforeOrientation,       // r <- r + h/2 (0, omega_{n+1}) r
+    TransposedInertia,            // I^-1 = R^T I0^-1 R
+    BodyInverseInertia,           // omega = I0^-1 L
+    InertiaNotInverted,           // omega = I L
+    TorqueReversed,               // q = f x (p - x)
+    LeverArmFromOrigin,           // q = p x f
+    MissingTimeStep,              // L <- L + q, v <- v + F/M
+    QuaternionMissingHalf,        // r <- r + h (0, omega) r
+    QuaternionNotNormalised,      // r <- r + h/2 (0, omega) r, not normalised
+    HalfExtentsForSize,           // I0 = M/12 diag(...) of the half extents
+    PointVelocityWithoutRotation, // v_p = v
+    RelativeVelocityReversed,     // v_rel = v_B - v_A
+    ImpulseLinearOnly,            // J = -(1 + c) v_rel.n / (1/M_A + 1/M_B)
+    ImpulseWithoutOnePlus,        // J = -c v_rel.n / (...)
+};
+
+struct MistakeInfo {
+    Mistake mistake;
+    const char* id;            // stable, e.g. "transposed-inertia"
+    const char* equation;      // the wrong equation, plain text
+    const char* explanation;   // one sentence: what went wrong and the right equation
+};
+
+// Every model, in the order of the enum (without None).
+const std::vector<MistakeInfo>& mistakeCatalogue();
+const MistakeInfo* findMistake(std::string_view id);
+
+// One body at the start of an explicit Euler step, and what acts on it.
+struct BodyStepInputs {
+    double h = 0.0;
+    double mass = 1.0;
+    Vec3 size = Vec3::Ones();
+    Vec3 x_W = Vec3::Zero();
+    Vec3 v_W = Vec3::Zero();
+    Quat q_WB = Quat::Identity();
+    Vec3 L_W = Vec3::Zero();
+    std::vector<std::pair<Vec3, Vec3>> forces;   // (p_i, f_i), world frame
+    Vec3 couple_W = Vec3::Zero();                // sum of pure couples q_j
+    Vec3 g_W = Vec3::Zero();                     // gravity, F += M g
+    std::vector<Vec3> probes_B;                  // points fixed to the body, body frame
+    InertiaConvention convention = InertiaConvention::Standard;
+};
+
+// The quantities of one hand-calculated explicit Euler step (trace ids in comments).
+struct HandEulerStep {
+    Mat3 I0_B, I0inv_B;          // inertia_body, inverse_inertia_body
+    Vec3 F_W, q_W;               // force, torque
+    Vec3 x_W, v_W;               // position, linear_velocity (after)
+    Quat q_WB;                   // orientation (after)
+    Vec3 L_W;                    // angular_momentum (after)
+    Mat3 R_WB, Iinv_W;           // rotation_matrix, inverse_inertia_world (after)
+    Vec3 omega_W;                // angular_velocity (after)
+    std::vector<Vec3> probe_W, probeVelocity_W;   // probe_position, point_velocity (after)
+
+    // The value of a trace id (index: the probe), or nullopt-like false.
+    bool value(std::string_view id, int index, TraceValue& out) const;
+};
+
+// The explicit Euler step of the TUM algorithm by hand, with `m` (None: correct).
+HandEulerStep handEulerStep(const BodyStepInputs& in, Mistake m = Mistake::None);
+
+// One contact impulse at its start: the two sides (B may be a plane: invM = 0, Iinv = 0).
+struct ContactInputs {
+    ContactGeometry g;
+    double restitution = 0.0;
+    Vec3 x_A = Vec3::Zero(), v_A = Vec3::Zero(), omega_A = Vec3::Zero();
+    Mat3 Iinv_A = Mat3::Zero();
+    double invM_A = 0.0;
+    Vec3 x_B = Vec3::Zero(), v_B = Vec3::Zero(), omega_B = Vec3::Zero();
+    Mat3 Iinv_B = Mat3::Zero();
+    double invM_B = 0.0;
+};
+
+struct HandImpulse {
+    Vec3 x_a, x_b;               // x_a, x_b
+    Vec3 velocity_a, velocity_b; // velocity_a, velocity_b
+    Vec3 v_rel;                  // relative_velocity
+    double v_rel_n = 0.0;        // normal_velocity
+    double numerator = 0.0;      // numerator
+    double denominator = 0.0;    // denominator
+    double J = 0.0;              // impulse (0 when separating)
+
+    bool value(std::string_view id, TraceValue& out) const;
+};
+
+// The normal impulse of the slides by hand (no friction), with `m` (None: correct).
+HandImpulse handImpulse(const ContactInputs& in, Mistake m = Mistake::None);
+
+} // namespace rbw

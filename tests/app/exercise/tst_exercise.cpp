@@ -1,0 +1,429 @@
+// rbw exercise (issue 10, item 6; docs/exercises.md): new numbers for practice.
+// Through the real binary: the same seed gives the same bytes, different seeds different
+// numbers; every scene of seeds 1..20 of each lesson loads, runs (rbw run exit 0), has
+// its varied values on the exercise's grid inside its ranges, and keeps the lesson's
+// point (each "require" contact happens, with the stated number of points), checked
+// here by stepping the scene independently of the generator; the answers key passes
+// rbw check (exit 0) and, negative control, one changed number fails it (exit 1); bad
+// inputs exit 2 with the file, the JSON path and the reason.
+#include "tests/test_support.h"
+
+#include "app/exercise/exercise.h"
+#include "physics/engine/world.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+#include <random>
+
+namespace {
+
+const QStringList kLessons{"01-one-step", "03-two-box-collision", "06-box-on-plane", "07-bounce", "08-conventions"};
+
+QJsonObject readJson(const QString& path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) return {};
+    return QJsonDocument::fromJson(f.readAll()).object();
+}
+
+// The value at a scene path such as "bodies[0].orientation.degrees".
+QJsonValue valueAt(QJsonValue v, const QString& path)
+{
+    static const QRegularExpression part(QStringLiteral(R"(([A-Za-z_]+)((?:\[\d+\])*))"));
+    for (const QString& p : path.split('.')) {
+        const QRegularExpressionMatch m = part.match(p);
+        v = v.toObject().value(m.captured(1));
+        const QStringList indices = m.captured(2).split(QRegularExpression(QStringLiteral(R"([\[\]])")), Qt::SkipEmptyParts);
+        for (const QString& i : indices) v = v.toArray().at(i.toInt());
+    }
+    return v;
+}
+
+} // namespace
+
+class TestExercise : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir dir_;
+
+    QString path(const QString& name) const { return dir_.filePath(name); }
+
+    // A lesson folder of our own: lesson 1's or 3's scene and the given exercise.json.
+    QString customLesson(const QString& name, const QString& sceneLesson, const QByteArray& exercise)
+    {
+        QDir(dir_.path()).mkpath(name);
+        const QString folder = dir_.filePath(name);
+        QFile::remove(folder + "/scene.json");
+        QFile::copy(QStringLiteral(RBW_SOURCE_DIR "/lessons/") + sceneLesson + "/scene.json", folder + "/scene.json");
+        QFile f(folder + "/exercise.json");
+        if (!f.open(QIODevice::WriteOnly)) qFatal("cannot write %s", qPrintable(f.fileName()));
+        f.write(exercise);
+        return folder;
+    }
+
+private slots:
+    void initTestCase() { QVERIFY(dir_.isValid()); }
+
+    // The mapping from the engine's integers: the C++ standard fixes mt19937_64's
+    // outputs (default seed 5489: the first is 14514284786278117030) and uniformIndex is
+    // rejection sampling written here, so the numbers are the same everywhere.
+    // 2^64 mod 10 = 6, so any first output >= 6 is kept and gives x0 % 10 = 0.
+    void uniformIndexIsPortable()
+    {
+        std::mt19937_64 engine;   // seed 5489
+        QCOMPARE(rbw::uniformIndex(engine, 9), std::uint64_t{0});
+        std::mt19937_64 again;
+        QCOMPARE(again(), std::uint64_t{14514284786278117030ULL});
+        // n = 0: only 0; and every draw stays in [0, n]
+        std::mt19937_64 e(42);
+        for (int i = 0; i < 1000; ++i) QCOMPARE(rbw::uniformIndex(e, 0), std::uint64_t{0});
+        for (int i = 0; i < 1000; ++i) QVERIFY(rbw::uniformIndex(e, 8) <= 8);
+    }
+
+    void sameSeedSameBytes_data()
+    {
+        QTest::addColumn<QString>("lesson");
+        for (const QString& l : kLessons) QTest::newRow(qPrintable(l)) << l;
+    }
+    void sameSeedSameBytes()
+    {
+        QFETCH(QString, lesson);
+        const rbw::test::RbwRun a = rbw::test::runRbw({"exercise", lesson, "--seed", "42"});
+        const rbw::test::RbwRun b = rbw::test::runRbw({"exercise", lesson, "--seed", "42"});
+        QCOMPARE(a.exitCode, 0);
+        QCOMPARE(b.exitCode, 0);
+        QVERIFY(!a.out.isEmpty());
+        QCOMPARE(a.out, b.out);
+        // --output writes the same bytes (through QSaveFile)
+        const QString file = path(lesson + "-42.json");
+        QCOMPARE(rbw::test::runRbw({"exercise", lesson, "--seed", "42", "--output", file}).exitCode, 0);
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), a.out);
+        // the name says the seed
+        const QString name = QJsonDocument::fromJson(a.out).object().value("name").toString();
+        QVERIFY2(name.endsWith(", seed 42"), qPrintable(name));
+    }
+
+    // Different seeds: different numbers (the scenes without their names differ pairwise).
+    void differentSeedsDifferentNumbers_data() { sameSeedSameBytes_data(); }
+    void differentSeedsDifferentNumbers()
+    {
+        QFETCH(QString, lesson);
+        QList<QJsonObject> scenes;
+        for (int seed = 1; seed <= 5; ++seed) {
+            const rbw::test::RbwRun r = rbw::test::runRbw({"exercise", lesson, "--seed", QString::number(seed)});
+            QCOMPARE(r.exitCode, 0);
+            QJsonObject o = QJsonDocument::fromJson(r.out).object();
+            o.remove("name");
+            for (const QJsonObject& earlier : scenes) QVERIFY2(o != earlier, qPrintable(lesson + " seed " + QString::number(seed)));
+            scenes << o;
+        }
+        // and none of them is the lesson's own scene (negative control of the comparison)
+        QJsonObject original = readJson(QStringLiteral(RBW_SOURCE_DIR "/lessons/") + lesson + "/scene.json");
+        original.remove("name");
+        original.remove("description");
+        for (QJsonObject s : scenes) {
+            s.remove("description");
+            QVERIFY(s != original);
+        }
+    }
+
+    // Seeds 1..20 of every lesson: loads, runs, values on the grid, the lesson's point kept.
+    void seedsLoadRunAndKeepThePoint_data()
+    {
+        QTest::addColumn<QString>("lesson");
+        QTest::addColumn<int>("seed");
+        for (const QString& l : kLessons) {
+            for (int seed = 1; seed <= 20; ++seed) QTest::newRow(qPrintable(l + " seed " + QString::number(seed))) << l << seed;
+        }
+    }
+    void seedsLoadRunAndKeepThePoint()
+    {
+        QFETCH(QString, lesson);
+        QFETCH(int, seed);
+        const QString file = path(QStringLiteral("%1-%2.json").arg(lesson).arg(seed));
+        QCOMPARE(rbw::test::runRbw({"exercise", lesson, "--seed", QString::number(seed), "--output", file}).exitCode, 0);
+        const rbw::test::RbwRun run = rbw::test::runRbw({"run", file, "--trace", "none"});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+
+        // Every varied value lies in its range, on the grid lo + k step.
+        const QJsonObject exercise = readJson(QStringLiteral(RBW_SOURCE_DIR "/lessons/") + lesson + "/exercise.json");
+        const QJsonObject scene = readJson(file);
+        for (const QJsonValue& ruleValue : exercise.value("vary").toArray()) {
+            const QJsonObject rule = ruleValue.toObject();
+            QStringList paths;
+            if (rule.contains("path")) paths << rule.value("path").toString();
+            for (const QJsonValue& p : rule.value("paths").toArray()) paths << p.toString();
+            const double step = rule.value("step").toDouble();
+            const QJsonArray range = rule.value("range").toArray();
+            for (const QString& p : paths) {
+                const QJsonValue v = valueAt(scene, p);
+                QList<double> values;
+                QList<QJsonArray> ranges;
+                if (range[0].isArray()) {
+                    for (int c = 0; c < range.size(); ++c) {
+                        values << v.toArray().at(c).toDouble();
+                        ranges << range[c].toArray();
+                    }
+                } else {
+                    values << v.toDouble();
+                    ranges << range;
+                }
+                for (int c = 0; c < values.size(); ++c) {
+                    const double lo = ranges[c][0].toDouble(), hi = ranges[c][1].toDouble();
+                    QVERIFY2(values[c] >= lo && values[c] <= hi, qPrintable(p + " out of range"));
+                    const double k = (values[c] - lo) / step;
+                    QVERIFY2(std::abs(k - std::round(k)) < 1e-9, qPrintable(p + " not on the grid"));
+                    // at most 2 decimals in the file's text: x * 100 is whole
+                    QVERIFY(std::abs(values[c] * 100 - std::round(values[c] * 100)) < 1e-9);
+                }
+            }
+            // "paths": one value for all of them
+            for (const QString& p : paths) QCOMPARE(valueAt(scene, p), valueAt(scene, paths.first()));
+        }
+
+        // The lesson's point: each required pair touches within the scene's steps, at the
+        // stated number of points in its first contact step. Stepped here, not by the
+        // generator: the scene file as rbw run reads it.
+        const rbw::SceneLoadResult loaded = rbw::loadSceneFile(file);
+        QVERIFY2(loaded.ok(), qPrintable(loaded.errors.join('\n')));
+        const rbw::SceneDef def = *loaded.scene;
+        rbw::World world(def);
+        const QJsonArray requires_ = exercise.value("require").toArray();
+        QList<int> firstPoints(requires_.size(), 0);
+        rbw::StepTrace trace;
+        auto name = [&](int body, int plane) {
+            return body >= 0 ? QString::fromStdString(def.bodies[body].name)
+                             : plane >= 0 ? QString::fromStdString(def.planes[plane].name) : QString();
+        };
+        for (long k = 0; k < def.steps; ++k) {
+            trace.clear();
+            QVERIFY(world.step(&trace).ok);
+            for (int r = 0; r < requires_.size(); ++r) {
+                if (firstPoints[r] > 0) continue;
+                const QJsonArray pair = requires_[r].toObject().value("contact").toArray();
+                int points = 0;
+                for (const rbw::ContactHeader& c : trace.contacts) {
+                    const QStringList names{name(c.bodyA, -1), name(c.bodyB, c.plane)};
+                    if (names.contains(pair[0].toString()) && names.contains(pair[1].toString())) points += c.pointCount;
+                }
+                firstPoints[r] = points;
+            }
+        }
+        for (int r = 0; r < requires_.size(); ++r) {
+            const QJsonObject req = requires_[r].toObject();
+            QVERIFY2(firstPoints[r] > 0, qPrintable("no contact for require[" + QString::number(r) + "]"));
+            if (req.contains("points")) QCOMPARE(firstPoints[r], req.value("points").toInt());
+        }
+        if (lesson == "03-two-box-collision") QCOMPARE(requires_.size(), 1);   // the A-B contact is required
+    }
+
+    // The key as an answers file passes rbw check; one changed number does not.
+    void answersKeyPassesCheck_data()
+    {
+        QTest::addColumn<QString>("lesson");
+        QTest::addColumn<int>("seed");
+        QTest::addColumn<QString>("changed");   // the quantity whose number the negative control changes
+        QTest::newRow("lesson 1, seed 7") << "01-one-step" << 7 << "angular_velocity";
+        QTest::newRow("lesson 1, seed 8") << "01-one-step" << 8 << "torque";
+        QTest::newRow("lesson 3, seed 7") << "03-two-box-collision" << 7 << "impulse";
+        QTest::newRow("lesson 3, seed 8") << "03-two-box-collision" << 8 << "relative_velocity";
+        QTest::newRow("lesson 6, seed 7") << "06-box-on-plane" << 7 << "impulse";
+        QTest::newRow("lesson 7, seed 7") << "07-bounce" << 7 << "impulse";
+        QTest::newRow("lesson 8, seed 7") << "08-conventions" << 7 << "angular_velocity";
+    }
+    void answersKeyPassesCheck()
+    {
+        QFETCH(QString, lesson);
+        QFETCH(int, seed);
+        QFETCH(QString, changed);
+        const QString tag = QStringLiteral("%1-%2").arg(lesson).arg(seed);
+        const QString scene = path(tag + "-scene.json"), key = path(tag + "-key.json");
+        QCOMPARE(rbw::test::runRbw({"exercise", lesson, "--seed", QString::number(seed), "--output", scene,
+                                    "--answers-key", key}).exitCode,
+                 0);
+        const rbw::test::RbwRun ok = rbw::test::runRbw({"check", scene, key, "--format", "json"});
+        QVERIFY2(ok.exitCode == 0, qPrintable(ok.out + ok.err));
+        const QJsonArray results = QJsonDocument::fromJson(ok.out).object().value("results").toArray();
+        QVERIFY(results.size() >= 4);
+        for (const QJsonValue& r : results) QCOMPARE(r.toObject().value("verdict").toString(), QStringLiteral("correct"));
+
+        // Negative control: add 0.5 to the first component of one number: exit 1.
+        QJsonObject doc = readJson(key);
+        QJsonArray answers = doc.value("answers").toArray();
+        bool done = false;
+        for (qsizetype i = 0; i < answers.size() && !done; ++i) {
+            QJsonObject a = answers[i].toObject();
+            if (a.value("quantity").toString() != changed) continue;
+            QJsonValue v = a.value("value");
+            if (v.isDouble()) {
+                v = v.toDouble() + 0.5;
+            } else {
+                QJsonArray arr = v.toArray();
+                arr[0] = arr[0].toDouble() + 0.5;
+                v = arr;
+            }
+            a.insert("value", v);
+            answers[i] = a;
+            done = true;
+        }
+        QVERIFY(done);
+        doc.insert("answers", answers);
+        const QString wrong = path(tag + "-wrong.json");
+        QFile f(wrong);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QJsonDocument(doc).toJson());
+        f.close();
+        QCOMPARE(rbw::test::runRbw({"check", scene, wrong}).exitCode, 1);
+    }
+
+    // The worksheet has an empty answer cell per answer of the key; the answer key fills
+    // every one, with the key's numbers.
+    void worksheetAndAnswerKey()
+    {
+        const QString sheet = path("sheet.html"), keyHtml = path("key.html"), key = path("sheet-key.json");
+        QCOMPARE(rbw::test::runRbw({"exercise", "01-one-step", "--seed", "3", "--worksheet", sheet, "--answer-key",
+                                    keyHtml, "--answers-key", key}).exitCode,
+                 0);
+        QFile s(sheet), k(keyHtml);
+        QVERIFY(s.open(QIODevice::ReadOnly));
+        QVERIFY(k.open(QIODevice::ReadOnly));
+        const QString sheetText = QString::fromUtf8(s.readAll()), keyText = QString::fromUtf8(k.readAll());
+        const qsizetype answers = readJson(key).value("answers").toArray().size();
+        // lesson 1: F, q, x, v, L, I^-1, omega and two probes' v_p
+        QCOMPARE(answers, qsizetype(9));
+        QCOMPARE(sheetText.count(QStringLiteral("<td class=\"answer\"></td>")), answers);
+        QCOMPARE(keyText.count(QStringLiteral("<td class=\"answer\"></td>")), qsizetype(0));
+        QCOMPARE(keyText.count(QStringLiteral("<td class=\"answer\">")), answers);
+        QVERIFY(sheetText.startsWith("<!DOCTYPE html>"));
+        QVERIFY(sheetText.contains("seed 3"));
+        for (const char* id : {"force", "torque", "angular_velocity", "point_velocity", "inverse_inertia_world"}) {
+            QVERIFY2(sheetText.contains(QStringLiteral("<code>%1</code>").arg(id)), id);
+        }
+        // x after the step is 0 (lesson 1's box starts at rest at the origin: x' = x + h v = 0)
+        QVERIFY(keyText.contains(QStringLiteral("<code>position</code></td><td>box</td><td></td><td>m</td><td class=\"answer\">(0, 0, 0)</td>")));
+    }
+
+    void badInputs_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("unknown lesson") << QStringList{"exercise", "99-nope", "--seed", "1"}
+                                        << "99-nope: LESSON: no lesson folder of that name";
+        QTest::newRow("no seed") << QStringList{"exercise", "01-one-step"} << "--seed N is required";
+        QTest::newRow("seed not a number") << QStringList{"exercise", "01-one-step", "--seed", "abc"}
+                                           << "--seed: must be a whole number";
+        QTest::newRow("negative seed") << QStringList{"exercise", "01-one-step", "--seed", "-1"}
+                                       << "--seed: must be a whole number";
+        QTest::newRow("seed too large") << QStringList{"exercise", "01-one-step", "--seed", "18446744073709551616"}
+                                        << "--seed: must be a whole number";
+        QTest::newRow("lesson without exercise") << QStringList{"exercise", "02-single-body", "--seed", "1"}
+                                                 << "02-single-body/exercise.json: (file): cannot open";
+        QTest::newRow("two lessons") << QStringList{"exercise", "01-one-step", "03-two-box-collision", "--seed", "1"}
+                                     << "exercise takes exactly one lesson";
+    }
+    void badInputs()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        const rbw::test::RbwRun r = rbw::test::runRbw(args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QVERIFY(r.out.isEmpty());
+    }
+
+    // Broken exercise files: the file, the JSON path and the reason.
+    void badExerciseFiles_data()
+    {
+        QTest::addColumn<QString>("sceneLesson");
+        QTest::addColumn<QByteArray>("exercise");
+        QTest::addColumn<QString>("message");
+        const QByteArray q = R"("quantities": ["force"])";
+        QTest::newRow("not JSON") << "01-one-step" << QByteArray("{ \"vary\": [") << "exercise.json: (file): not valid JSON";
+        QTest::newRow("path not in scene")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[3].mass", "range": [1, 2], "step": 0.5 } ], )" + q + "}")
+            << "exercise.json: vary[0].path: \"bodies[3].mass\" is not in scene.json";
+        QTest::newRow("range reversed")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [2, 1], "step": 0.5 } ], )" + q + "}")
+            << "exercise.json: vary[0].range: must be [lo, hi]";
+        QTest::newRow("vector needs ranges")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "forces[0].force", "range": [1, 2], "step": 0.5 } ], )" + q + "}")
+            << "exercise.json: vary[0].path: \"forces[0].force\" is not a number";
+        QTest::newRow("step zero")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 2], "step": 0 } ], )" + q + "}")
+            << "exercise.json: vary[0].step: must be a number > 0";
+        QTest::newRow("unknown quantity")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 2], "step": 0.5 } ], "quantities": ["omega"] })")
+            << "exercise.json: quantities[0]: \"omega\" is not a trace id";
+        QTest::newRow("unknown key")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 2], "step": 0.5, "stp": 1 } ], )" + q + "}")
+            << "exercise.json: vary[0].stp: unknown key";
+        // Every value of the range breaks the scene: the loader's reason, after the retries.
+        QTest::newRow("scene does not load")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [-2, -1], "step": 0.5 } ], "attempts": 3, )" + q + "}")
+            << "exercise.json: vary: no scene out of 3 sub-seeds of seed 1 kept the lesson's point; the last: the scene does not load";
+        // Lesson 3 with B flying away from A: the boxes never collide.
+        QTest::newRow("lesson point lost")
+            << "03-two-box-collision"
+            << QByteArray(R"({ "vary": [ { "path": "bodies[1].linear_velocity", "range": [[1, 2], [0, 0], [0, 0]], "step": 0.5 },
+                                         { "path": "bodies[0].linear_velocity", "range": [[-2, -1], [0, 0], [0, 0]], "step": 0.5 } ],
+                             "require": [ { "contact": ["A", "B"] } ], "attempts": 5, "quantities": ["impulse"] })")
+            << "require[0]: no contact between A and B in the scene's 3 steps";
+        // Lesson 6's vertex cube first touches at 1 corner; requiring 2 can never hold.
+        QTest::newRow("contact points differ")
+            << "06-box-on-plane"
+            << QByteArray(R"({ "vary": [ { "path": "restitution", "range": [0.2, 0.8], "step": 0.1 } ],
+                             "require": [ { "contact": ["vertex", "ground"], "points": 2 } ], "attempts": 2, "quantities": ["impulse"] })")
+            << "require[0]: vertex and ground first touch with 1 contact point, the lesson needs 2";
+        QTest::newRow("require unknown body")
+            << "03-two-box-collision"
+            << QByteArray(R"({ "vary": [ { "path": "restitution", "range": [0.5, 1], "step": 0.1 } ],
+                             "require": [ { "contact": ["A", "C"] } ], "quantities": ["impulse"] })")
+            << "exercise.json: require[0].contact: no body or plane \"C\" in the scene";
+    }
+    void badExerciseFiles()
+    {
+        QFETCH(QString, sceneLesson);
+        QFETCH(QByteArray, exercise);
+        QFETCH(QString, message);
+        const QString folder = customLesson(QStringLiteral("custom-%1").arg(QTest::currentDataTag()).replace(' ', '-'),
+                                            sceneLesson, exercise);
+        const QString out = path("never-written.json");
+        const rbw::test::RbwRun r = rbw::test::runRbw({"exercise", folder, "--seed", "1", "--output", out});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QVERIFY(!QFile::exists(out));
+    }
+
+    // The good negative of badExerciseFiles: the same custom folder mechanism with a
+    // valid file works (so the failures above are the files', not the mechanism's).
+    void customLessonFolderWorks()
+    {
+        const QString folder = customLesson("custom-good", "01-one-step",
+                                            R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 2], "step": 0.5 } ], "quantities": ["force"] })");
+        const rbw::test::RbwRun r = rbw::test::runRbw({"exercise", folder, "--seed", "1"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const double mass = QJsonDocument::fromJson(r.out).object().value("bodies").toArray()[0].toObject().value("mass").toDouble();
+        QVERIFY(mass == 1.0 || mass == 1.5 || mass == 2.0);
+    }
+
+    void unwritableOutput()
+    {
+        const rbw::test::RbwRun r =
+            rbw::test::runRbw({"exercise", "01-one-step", "--seed", "1", "--worksheet", "/nonexistent-dir/sheet.html"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("/nonexistent-dir/sheet.html: --worksheet: cannot write"), qPrintable(r.err));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestExercise)
+#include "tst_exercise.moc"

@@ -1,0 +1,103 @@
+// The Contacts tab of the Accuracy dock under Xvfb: a small contact study runs off the
+// GUI thread to completion, the table holds the runner's numbers (those of
+// runContactStudy for the same configuration, without the timing), the chart draws one
+// line per model and iteration count, bad input is refused with the reason, and the
+// CSV export is the CLI's.
+#include "app/output/study_csv.h"
+#include "app/gui/panels/accuracy/contact_study_panel.h"
+
+#include <QAbstractItemModelTester>
+#include <QChart>
+#include <QFile>
+#include <QSignalSpy>
+#include <QStandardItemModel>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace rbw;
+
+class TestContactStudyPanel : public QObject {
+    Q_OBJECT
+private slots:
+    void smallStudy();
+    void badInputRefused();
+};
+
+void TestContactStudyPanel::smallStudy()
+{
+    ContactStudyPanel panel;
+    QAbstractItemModelTester tester(panel.tableModel(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+    panel.resize(900, 800);
+    panel.show();
+    panel.setProblem(lab::ContactProblem::RestingBox);
+    panel.setIterationsText(QStringLiteral("1, 4"));
+    panel.setDtText(QStringLiteral("1/60, 0.0333333333333333333"));   // a fraction reads as one
+    panel.setEndTime(1.0);
+    panel.setMetric(ContactMetric::Drift);
+    QSignalSpy finished(&panel, &ContactStudyPanel::studyFinished);
+    QVERIFY(panel.startStudy());
+    QVERIFY(finished.wait(60000));
+    // course x 2 h, then manifold 1 and 4 x 2 h
+    QCOMPARE(panel.result().rows.size(), size_t(6));
+    QCOMPARE(panel.tableModel()->rowCount(), 6);
+    QCOMPARE(panel.tableModel()->columnCount(), contactStudyCsvHeader().size());
+
+    // The same numbers as the runner gives for this configuration (the runs are
+    // deterministic; only the wall time differs).
+    lab::ContactStudyConfig c;
+    c.problem = lab::ContactProblem::RestingBox;
+    c.iterations = {1, 4};
+    c.dts = {1.0 / 60.0, 1.0 / 30.0};
+    c.tEnd = 1.0;
+    const lab::ContactStudyResult direct = lab::runContactStudy(c);
+    for (size_t i = 0; i < direct.rows.size(); ++i) {
+        QCOMPARE(panel.result().rows[i].model, direct.rows[i].model);
+        QCOMPARE(panel.result().rows[i].iterations, direct.rows[i].iterations);
+        QCOMPARE(panel.result().rows[i].steps, direct.rows[i].steps);
+        QCOMPARE(*panel.result().rows[i].drift, *direct.rows[i].drift);
+        QCOMPARE(panel.result().rows[i].energyGained, direct.rows[i].energyGained);
+        // the table shows the CSV's field for it (column 8: drift)
+        QCOMPARE(panel.tableModel()->item(int(i), 8)->text(),
+                 QString::number(*direct.rows[i].drift, 'g', QLocale::FloatingPointShortest));
+    }
+    // One line per model and iteration count whose drift is above 0: the course model's
+    // and the manifold's (a run that holds the box exactly still is not drawn, and the
+    // status says so).
+    int drawable = 0;
+    for (const int iterations : {0, 1, 4}) {
+        for (const lab::ContactStudyRow& row : direct.rows) {
+            if (row.iterations == iterations && *row.drift > 0.0) {
+                ++drawable;
+                break;
+            }
+        }
+    }
+    QCOMPARE(panel.seriesCount(), drawable);
+    QVERIFY(panel.seriesCount() >= 2);
+
+    // Export: the CLI's CSV of these rows.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("contacts.csv"));
+    QString error;
+    QVERIFY2(panel.exportCsv(path, &error), qPrintable(error));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(QString::fromUtf8(f.readAll()), contactStudyToCsv(panel.result()));
+}
+
+void TestContactStudyPanel::badInputRefused()
+{
+    ContactStudyPanel panel;
+    panel.setIterationsText(QStringLiteral("4, 0"));
+    QVERIFY(!panel.startStudy());
+    QVERIFY2(panel.statusText().contains(QStringLiteral("iterations: must be whole numbers from 1 to 1000, got 0")),
+             qPrintable(panel.statusText()));
+    panel.setIterationsText(QStringLiteral("4"));
+    panel.setDtText(QStringLiteral("fast"));
+    QVERIFY(!panel.startStudy());
+    QVERIFY(panel.statusText().contains(QStringLiteral("h: must be numbers > 0, got \"fast\"")));
+    QVERIFY(!panel.isRunning());
+}
+
+QTEST_MAIN(TestContactStudyPanel)
+#include "tst_contact_study_panel.moc"

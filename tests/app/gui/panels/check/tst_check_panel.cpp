@@ -1,0 +1,318 @@
+// "Check my numbers" (app/gui/panels/check/): the table of a step's quantities with the
+// student's entries, coloured by the checker's verdicts, "What's wrong?", "Next step",
+// the entries kept per lesson and step, and saving / loading them as an answers file.
+//
+// The wrong numbers are made here from the step's own trace, the way the student who
+// makes the mistake would: lesson 8's box "standard" at step 0, with R, I0^-1 and L
+// read from the trace, gives
+//   the wrong  I^-1 = R^T I0^-1 R           (the transposed-inertia mistake),
+//   the wrong  omega = R^T I0^-1 R L        (the omega that mistake gives),
+// while the workbook's omega = R I0^-1 R^T L is the trace's angular_velocity
+// (tst_checker checks the same chain against the checker alone).
+#include "app/core/session.h"
+#include "app/gui/panels/check/check_model.h"
+#include "app/gui/panels/check/check_panel.h"
+#include "app/gui/shell/main_window.h"
+#include "app/gui/panels/view/scene_view.h"
+#include "tests/test_support.h"
+
+#include <QAbstractItemModelTester>
+#include <QDockWidget>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace rbw;
+using rbw::test::lessonScene;
+using State = CheckModel::RowState;
+
+namespace {
+
+QString vecText(const Vec3& v, int digits)
+{
+    return QStringLiteral("(%1, %2, %3)")
+        .arg(QString::number(v.x(), 'g', digits), QString::number(v.y(), 'g', digits), QString::number(v.z(), 'g', digits));
+}
+
+QString matText(const Mat3& m)
+{
+    QStringList rows;
+    for (int i = 0; i < 3; ++i) {
+        rows << QStringLiteral("%1 %2 %3")
+                    .arg(QString::number(m(i, 0), 'g', 10), QString::number(m(i, 1), 'g', 10), QString::number(m(i, 2), 'g', 10));
+    }
+    return rows.join(QStringLiteral("; "));
+}
+
+// Lesson 8 after one step, with the panel showing it.
+struct Lesson8 {
+    Session session;
+    CheckPanel panel;
+    Mat3 IinvT;     // R^T I0^-1 R: the transposed inverse inertia
+    Vec3 omegaT;    // R^T I0^-1 R L: the omega it gives
+    Vec3 omega;     // the workbook's omega (the trace's)
+    int iinvRow = -1;
+    int omegaRow = -1;
+
+    Lesson8()
+    {
+        session.load(lessonScene("08-conventions/scene.json"));
+        session.step();   // step 0
+        const StepTrace& t = *session.currentTrace();
+        const Mat3 R = std::get<Mat3>(t.find("rotation_matrix", 0)->value);
+        const Mat3 I0inv = std::get<Mat3>(t.find("inverse_inertia_body", 0)->value);
+        const Vec3 L = std::get<Vec3>(t.find("angular_momentum", 0)->value);
+        IinvT = R.transpose() * I0inv * R;
+        omegaT = IinvT * L;
+        omega = std::get<Vec3>(t.find("angular_velocity", 0)->value);
+        panel.setStep("08-conventions", session.worldBeforeCurrentStep(), &t, session.world()->scene());
+        iinvRow = panel.model()->rowOf("inverse_inertia_world", 0);
+        omegaRow = panel.model()->rowOf("angular_velocity", 0);
+    }
+    CheckModel* model() const { return panel.model(); }
+    // Types into a "Yours" cell through the model's edit role, as the cell editor does.
+    void type(int row, const QString& text) { QVERIFY(model()->setData(model()->index(row, CheckModel::YoursColumn), text)); }
+    QString mark(int row) const { return model()->index(row, CheckModel::MarkColumn).data().toString(); }
+    QColor colour(int row) const
+    {
+        return model()->index(row, CheckModel::YoursColumn).data(Qt::BackgroundRole).value<QBrush>().color();
+    }
+};
+
+} // namespace
+
+class TestCheckPanel : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void listsTheStepsQuantities();
+    void verdicts_data();
+    void verdicts();
+    void typingIntoTheCell();
+    void unreadableEntry();
+    void nextStepSelectsFirstEmpty();
+    void saveAndLoad();
+    void keptPerLessonAndStep();
+};
+
+void TestCheckPanel::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings().clear();
+}
+
+void TestCheckPanel::listsTheStepsQuantities()
+{
+    Lesson8 l;
+    QAbstractItemModelTester tester(l.model(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+    QVERIFY(l.model()->rowCount() > 10);
+    QVERIFY(l.iinvRow >= 0);
+    QVERIFY(l.omegaRow >= 0);
+    // Table order is the trace's: I^-1 is computed (and listed) before omega = I^-1 L.
+    QVERIFY(l.iinvRow < l.omegaRow);
+    QCOMPARE(l.model()->index(l.omegaRow, CheckModel::OfColumn).data().toString(), QString("standard"));
+    QVERIFY(l.model()->index(l.omegaRow, CheckModel::QuantityColumn).data().toString().contains("angular_velocity"));
+    QCOMPARE(l.model()->firstEmptyRow(), 0);   // nothing typed yet
+
+    // Before the first step there is nothing to check.
+    Session s;
+    s.load(lessonScene("08-conventions/scene.json"));
+    CheckPanel empty;
+    empty.setStep("08-conventions", s.worldBeforeCurrentStep(), s.currentTrace(), s.world()->scene());
+    QCOMPARE(empty.model()->rowCount(), 0);
+}
+
+void TestCheckPanel::verdicts_data()
+{
+    QTest::addColumn<bool>("wrongIinvFirst");   // type R^T I0^-1 R into I^-1 (an earlier row) first
+    QTest::addColumn<int>("omegaKind");         // 0: R^T I0^-1 R L, 1: the trace's omega to 4 figures
+    QTest::addColumn<int>("state");
+    QTest::addColumn<QString>("markSign");
+    QTest::addColumn<QString>("mistake");       // named by What's wrong?, "" for none
+    // omega = R^T I0^-1 R L alone: wrong, and it is the transposed-inertia mistake.
+    QTest::newRow("transposed omega") << false << 0 << int(State::Wrong) << QString::fromUtf8("✗") << "transposed-inertia";
+    // The same omega after the wrong I^-1 = R^T I0^-1 R: it is I^-1 L of the student's own
+    // I^-1, so it follows from that earlier error (amber).
+    QTest::newRow("omega after wrong I^-1") << true << 0 << int(State::FollowsFromEarlier) << QString::fromUtf8("↪") << "";
+    // Negative control: the workbook's omega to 4 significant figures is right.
+    QTest::newRow("right omega") << false << 1 << int(State::Correct) << QString::fromUtf8("✓") << "";
+}
+
+void TestCheckPanel::verdicts()
+{
+    QFETCH(bool, wrongIinvFirst);
+    QFETCH(int, omegaKind);
+    QFETCH(int, state);
+    QFETCH(QString, markSign);
+    QFETCH(QString, mistake);
+    Lesson8 l;
+    if (wrongIinvFirst) {
+        l.type(l.iinvRow, matText(l.IinvT));
+        QCOMPARE(l.model()->rowState(l.iinvRow), State::Wrong);
+    }
+    l.type(l.omegaRow, omegaKind == 0 ? vecText(l.omegaT, 10) : vecText(l.omega, 4));
+    QCOMPARE(int(l.model()->rowState(l.omegaRow)), state);
+    // Colour and, for colour-blind readers, a sign and a word in the Mark column.
+    QVERIFY(l.mark(l.omegaRow).startsWith(markSign));
+    const QColor c = l.colour(l.omegaRow);
+    if (state == int(State::Wrong)) QVERIFY(c.red() > c.green() + 30);                      // red
+    if (state == int(State::Correct)) QVERIFY(c.green() > c.red() + 30);                    // green
+    if (state == int(State::FollowsFromEarlier)) QVERIFY(c.red() > c.blue() + 60 && c.green() > c.blue() + 60);   // amber
+
+    // What's wrong? on the entry.
+    l.panel.view()->setCurrentIndex(l.model()->index(l.omegaRow, CheckModel::YoursColumn));
+    auto* button = l.panel.findChild<QPushButton*>("whatsWrongButton");
+    QCOMPARE(button->isEnabled(), state != int(State::Correct));
+    l.panel.showWhatsWrong();
+    const QString html = l.panel.explanationHtml();
+    const QStringList ids = l.model()->index(l.omegaRow, 0).data(CheckModel::MistakesRole).toStringList();
+    if (mistake.isEmpty()) {
+        QVERIFY2(!ids.contains("transposed-inertia"), qPrintable(ids.join(',')));
+        QVERIFY(!html.contains("transposed-inertia"));
+    } else {
+        QVERIFY2(ids.contains(mistake), qPrintable(ids.join(',')));
+        QVERIFY(html.contains(mistake));
+        QVERIFY(html.contains(QString::fromUtf8(findMistake(mistake.toStdString())->equation).toHtmlEscaped()) ||
+                html.contains("I⁻¹"));
+        // The workbook's number is shown: its first component to 7 figures.
+        QVERIFY2(html.contains(QString::number(l.omega.x(), 'g', 7)), qPrintable(html));
+    }
+}
+
+// The cell editor path: select the cell, type, press Enter.
+void TestCheckPanel::typingIntoTheCell()
+{
+    Lesson8 l;
+    l.panel.resize(900, 600);
+    l.panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&l.panel));
+    QTableView* view = l.panel.view();
+    const QModelIndex cell = l.model()->index(l.omegaRow, CheckModel::YoursColumn);
+    view->scrollTo(cell);
+    view->setCurrentIndex(cell);
+    view->edit(cell);
+    auto* editor = view->findChild<QLineEdit*>();
+    QVERIFY(editor != nullptr);
+    QTest::keyClicks(editor, vecText(l.omegaT, 10));
+    QTest::keyClick(editor, Qt::Key_Return);   // the delegate commits in a queued call
+    QTRY_COMPARE(l.model()->rowState(l.omegaRow), State::Wrong);
+    QCOMPARE(cell.data().toString(), vecText(l.omegaT, 10));
+}
+
+void TestCheckPanel::unreadableEntry()
+{
+    Lesson8 l;
+    l.type(l.omegaRow, "(-2.4, 4.9.1, 0)");
+    QCOMPARE(l.model()->rowState(l.omegaRow), State::Unreadable);
+    QVERIFY(l.mark(l.omegaRow).contains("cannot read '4.9.1'"));
+    l.type(l.omegaRow, "(1, 2)");
+    QVERIFY(l.mark(l.omegaRow).contains("3 numbers expected, got 2"));
+    // An unreadable entry is not an earlier answer: the row after it is still checked.
+    l.type(l.omegaRow, "");
+    QCOMPARE(l.model()->rowState(l.omegaRow), State::Empty);
+    QCOMPARE(l.mark(l.omegaRow), QString());
+}
+
+void TestCheckPanel::nextStepSelectsFirstEmpty()
+{
+    Lesson8 l;
+    l.type(0, "0");
+    l.type(1, "0");
+    QCOMPARE(l.model()->firstEmptyRow(), 2);
+    QVERIFY(l.panel.selectNextEmpty());
+    QCOMPARE(l.panel.view()->currentIndex().row(), 2);
+    QCOMPARE(l.panel.view()->currentIndex().column(), int(CheckModel::YoursColumn));
+}
+
+void TestCheckPanel::saveAndLoad()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("answers.json");
+    {
+        Lesson8 l;
+        l.type(l.iinvRow, matText(l.IinvT));
+        l.type(l.omegaRow, vecText(l.omegaT, 10));
+        QString error;
+        QVERIFY2(l.panel.saveAnswers(path, &error), qPrintable(error));
+    }
+    // The file is an answers file (answers_file.h): step 0, both entries, the body by name.
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QJsonObject o = QJsonDocument::fromJson(f.readAll()).object();
+    QCOMPARE(o.value("step").toInt(), 0);
+    const QJsonArray answers = o.value("answers").toArray();
+    QCOMPARE(answers.size(), 2);
+    QCOMPARE(answers[0].toObject().value("quantity").toString(), QString("inverse_inertia_world"));
+    QCOMPARE(answers[1].toObject().value("body").toString(), QString("standard"));
+
+    // Loaded into a fresh panel: the same entries and verdicts (wrong, then amber).
+    Lesson8 l;
+    QString error;
+    QVERIFY2(l.panel.loadAnswers(path, &error), qPrintable(error));
+    QCOMPARE(l.model()->rowState(l.iinvRow), State::Wrong);
+    QCOMPARE(l.model()->rowState(l.omegaRow), State::FollowsFromEarlier);
+
+    // A file that is not an answers file is refused with a message.
+    const QString bad = dir.filePath("bad.json");
+    QFile b(bad);
+    QVERIFY(b.open(QIODevice::WriteOnly));
+    b.write("{\"answers\": [{\"quantity\": \"angular_velocity\", \"body\": \"nobody\", \"value\": [1, 2, 3]}]}");
+    b.close();
+    QVERIFY(!l.panel.loadAnswers(bad, &error));
+    QVERIFY2(error.contains("nobody"), qPrintable(error));
+}
+
+// In the app: the dock is there, and entries survive switching steps and lessons.
+void TestCheckPanel::keptPerLessonAndStep()
+{
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.findChild<QDockWidget*>("checkDock") != nullptr);
+    QVERIFY(w.openLesson("08-conventions"));
+    CheckModel* m = w.checkPanel()->model();
+    QCOMPARE(m->rowCount(), 0);   // step 0 not taken yet
+    w.stepOnce();
+    QVERIFY(m->rowCount() > 0);
+    const int row = m->rowOf("angular_velocity", 0);
+    QVERIFY(m->setData(m->index(row, CheckModel::YoursColumn), "(1, 2, 3)"));
+    QCOMPARE(m->rowState(row), State::Wrong);
+
+    w.stepOnce();   // step 1: its own, empty entries
+    QCOMPARE(m->step(), 1L);
+    QCOMPARE(m->index(m->rowOf("angular_velocity", 0), CheckModel::YoursColumn).data().toString(), QString());
+    w.stepBack();   // back at step 0: the entry again
+    QCOMPARE(m->step(), 0L);
+    QCOMPARE(m->index(row, CheckModel::YoursColumn).data().toString(), QString("(1, 2, 3)"));
+
+    QVERIFY(w.openLesson("01-one-step"));
+    w.stepOnce();
+    QCOMPARE(m->lesson(), QString("01-one-step"));
+    QCOMPARE(m->index(m->rowOf("angular_velocity", 0), CheckModel::YoursColumn).data().toString(), QString());
+    QVERIFY(w.openLesson("08-conventions"));
+    w.stepOnce();
+    QCOMPARE(m->index(row, CheckModel::YoursColumn).data().toString(), QString("(1, 2, 3)"));
+    QCOMPARE(m->rowState(row), State::Wrong);
+}
+
+int main(int argc, char* argv[])
+{
+    // As in the app's main(): shared GL contexts for QtWebEngine and the 3D view.
+    QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+    QSurfaceFormat::setDefaultFormat(SceneView::requestedFormat());
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("rigid-workbook-tests");
+    TestCheckPanel test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "tst_check_panel.moc"

@@ -1,0 +1,260 @@
+// The mistake models of physics/workbook/checker/mistakes.h against hand-derived numbers.
+//
+// Table 2.1 (lesson 1): box a, b, c = 1, 0.6, 0.5, M = 2, x = 0, v = 0, L = 0,
+// r = 90 deg about z = [0.7071068, 0, 0, 0.7071068], f = (1, 1, 0) at p = (0.3, 0.5, 0.25),
+// h = 2. By hand:
+//   q = (p - x) x f = (0.5*0 - 0.25*1, 0.25*1 - 0.3*0, 0.3*1 - 0.5*1) = (-0.25, 0.25, -0.2)
+//   v' = v + h F/M = (1, 1, 0),  x' = x + h v = 0,  L' = L + h q = (-0.5, 0.5, -0.4)
+//   I0 = M/12 diag(b^2 + c^2, a^2 + c^2, a^2 + b^2) = diag(0.61, 1.25, 1.36)/6
+//      = diag(0.1016667, 0.2083333, 0.2266667);  I0^-1 = diag(9.836066, 4.8, 4.411765)
+//   R = Rz(90): I^-1 = R I0^-1 R^T = diag(4.8, 9.836066, 4.411765)
+//   omega' = I^-1 L' = (-2.4, 4.918033, -1.764706)
+// Lesson 3: p = (1.02, 0.5, 0), n = (-1, 0, 0), x_A = (0.03, 0, 0), v_A = (1, 0, 0),
+// v_B = (-1, 0, 0), no spin, c = 1, 1/M_A = 0.5, 1/M_B = 1, I_A^-1 = 3/4 E, B's lever arm
+// along n: v_rel = (2, 0, 0), v_rel.n = -2, numerator 4, denominator 27/16, J = 64/27.
+#include "tests/test_support.h"
+
+#include "physics/workbook/checker/mistakes.h"
+#include "physics/engine/quantities.h"
+#include "physics/engine/world.h"
+
+#include <QtTest>
+
+using rbw::Mistake;
+using rbw::Quat;
+using rbw::Vec3;
+
+Q_DECLARE_METATYPE(rbw::Mistake)
+
+namespace {
+
+rbw::BodyStepInputs table21()
+{
+    rbw::BodyStepInputs in;
+    in.h = 2.0;
+    in.mass = 2.0;
+    in.size = Vec3(1, 0.6, 0.5);
+    in.q_WB = Quat(std::sqrt(0.5), 0, 0, std::sqrt(0.5));
+    in.forces = {{Vec3(0.3, 0.5, 0.25), Vec3(1, 1, 0)}};
+    // probes at (-0.3, -0.5, -0.25) and (0.3, 0.5, 0.25) in the world at t = 0: body
+    // frame p_B = R^T p = Rz(-90) p
+    in.probes_B = {Vec3(-0.5, 0.3, -0.25), Vec3(0.5, -0.3, 0.25)};
+    return in;
+}
+
+rbw::ContactInputs lesson3()
+{
+    rbw::ContactInputs c;
+    c.g.p_W = Vec3(1.02, 0.5, 0);
+    c.g.n_W = Vec3(-1, 0, 0);
+    c.restitution = 1.0;
+    c.x_A = Vec3(0.03, 0, 0);
+    c.v_A = Vec3(1, 0, 0);
+    c.Iinv_A = 0.75 * rbw::Mat3::Identity();
+    c.invM_A = 0.5;
+    c.x_B = Vec3(1.02 + 0.866, 0.5, 0);   // x_b = p - x_B along n: no rotational term
+    c.v_B = Vec3(-1, 0, 0);
+    c.Iinv_B = 6.0 * rbw::Mat3::Identity();
+    c.invM_B = 1.0;
+    return c;
+}
+
+QList<double> handValue(const rbw::HandEulerStep& s, const char* id, int index = -1)
+{
+    rbw::TraceValue v;
+    if (!s.value(id, index, v)) qFatal("no %s in the hand step", id);
+    return rbw::test::flatten(v);
+}
+
+QList<double> impulseValue(const rbw::HandImpulse& s, const char* id)
+{
+    rbw::TraceValue v;
+    if (!s.value(id, v)) qFatal("no %s in the hand impulse", id);
+    return rbw::test::flatten(v);
+}
+
+} // namespace
+
+class TestMistakes : public QObject {
+    Q_OBJECT
+private slots:
+    // The correct hand step is the physics' own step: lesson 1's trace, number for number.
+    void correctHandStepIsThePhysics()
+    {
+        rbw::World world(rbw::test::lessonScene(QStringLiteral("01-one-step/scene.json")));
+        rbw::StepTrace trace;
+        QVERIFY(world.step(&trace).ok);
+        const rbw::HandEulerStep s = rbw::handEulerStep(table21());
+        for (const rbw::QuantityInfo* q : {&rbw::q::position, &rbw::q::linear_velocity, &rbw::q::orientation,
+                                           &rbw::q::angular_momentum, &rbw::q::inverse_inertia_world,
+                                           &rbw::q::angular_velocity, &rbw::q::inertia_body}) {
+            const rbw::TraceEntry* e = trace.find(q->id, 0);
+            QVERIFY2(e != nullptr, q->id);
+            const QString m = rbw::test::mismatch(handValue(s, q->id), rbw::test::flatten(e->value), 1e-12);
+            QVERIFY2(m.isEmpty(), qPrintable(QString::fromLatin1(q->id) + QStringLiteral(": ") + m));
+        }
+        for (int i = 0; i < 2; ++i) {
+            const rbw::TraceEntry* e = trace.find(rbw::q::point_velocity.id, 0, i);
+            QVERIFY(e != nullptr);
+            const QString m =
+                rbw::test::mismatch(handValue(s, rbw::q::point_velocity.id, i), rbw::test::flatten(e->value), 1e-12);
+            QVERIFY2(m.isEmpty(), qPrintable(m));
+        }
+    }
+
+    void eulerMistake_data()
+    {
+        QTest::addColumn<Mistake>("mistake");
+        QTest::addColumn<QString>("id");
+        QTest::addColumn<int>("index");
+        QTest::addColumn<QList<double>>("expected");
+        // x <- x + h v_{n+1} = 0 + 2 (1, 1, 0)
+        QTest::newRow("velocity-before-position") << Mistake::VelocityBeforePosition << "position" << -1
+                                                  << QList<double>{2, 2, 0};
+        // L <- L + q, v <- v + F/M = (0.5, 0.5, 0)
+        QTest::newRow("missing-time-step L") << Mistake::MissingTimeStep << "angular_momentum" << -1
+                                             << QList<double>{-0.25, 0.25, -0.2};
+        QTest::newRow("missing-time-step v") << Mistake::MissingTimeStep << "linear_velocity" << -1
+                                             << QList<double>{0.5, 0.5, 0};
+        // q = f x (p - x) = -(p - x) x f
+        QTest::newRow("torque-reversed") << Mistake::TorqueReversed << "torque" << -1
+                                         << QList<double>{0.25, -0.25, 0.2};
+        // omega = I0^-1 L' = (9.836066 * -0.5, 4.8 * 0.5, 4.411765 * -0.4)
+        QTest::newRow("body-inverse-inertia") << Mistake::BodyInverseInertia << "angular_velocity" << -1
+                                              << QList<double>{-4.918033, 2.4, -1.764706};
+        // omega = I L' with I = R I0 R^T = diag(1.25, 0.61, 1.36)/6:
+        //   (-1.25/12, 0.61/12, -1.36*0.4/6)
+        QTest::newRow("inertia-not-inverted") << Mistake::InertiaNotInverted << "angular_velocity" << -1
+                                              << QList<double>{-0.1041667, 0.0508333, -0.0906667};
+        // I0 of the half extents: a quarter of the right one
+        QTest::newRow("half-extents-for-size") << Mistake::HalfExtentsForSize << "inertia_body" << -1
+                                               << QList<double>{0.0254167, 0, 0, 0, 0.0520833, 0, 0, 0, 0.0566667};
+        // v_p = v = (1, 1, 0) (the right one is (3.111861, 1.070588, -2.67541))
+        QTest::newRow("point-velocity-without-rotation") << Mistake::PointVelocityWithoutRotation << "point_velocity"
+                                                         << 1 << QList<double>{1, 1, 0};
+        // r' = normalise(r + (h/2)(0, omega') r), omega' = (-2.4, 4.918033, -1.764706), h/2 = 1:
+        //   (0, omega') r = (-omega'.v, s omega' + omega' x v) with r = (s, v), s = sqrt(1/2),
+        //   v = (0, 0, s): (1.247835, 1.780518, 5.174631, -1.247835)  [w, x, y, z]
+        //   r + that = (1.954942, 1.780518, 5.174631, -0.540729), |.| = 5.836200
+        QTest::newRow("omega-before-orientation") << Mistake::OmegaBeforeOrientation << "orientation" << -1
+                                                  << QList<double>{0.3349683, 0.3050817, 0.8866438, -0.0926508};
+    }
+
+    void eulerMistake()
+    {
+        QFETCH(Mistake, mistake);
+        QFETCH(QString, id);
+        QFETCH(int, index);
+        QFETCH(QList<double>, expected);
+        const rbw::HandEulerStep wrong = rbw::handEulerStep(table21(), mistake);
+        const QString m = rbw::test::mismatch(handValue(wrong, qPrintable(id), index), expected, 2e-6);
+        QVERIFY2(m.isEmpty(), qPrintable(m));
+        // Negative control: the correct step gives another number.
+        const rbw::HandEulerStep right = rbw::handEulerStep(table21());
+        QVERIFY(!rbw::test::mismatch(handValue(right, qPrintable(id), index), expected, 1e-3).isEmpty());
+    }
+
+    // A lever arm from the origin only shows when x != 0: x = (1, 0, 0), p = (0.3, 0.5, 0.25),
+    // f = (1, 1, 0): right (p - x) x f = (-0.7, 0.5, 0.25) x f = (-0.25, 0.25, -1.2),
+    // wrong p x f = (-0.25, 0.25, -0.2).
+    void leverArmFromOrigin()
+    {
+        rbw::BodyStepInputs in = table21();
+        in.x_W = Vec3(1, 0, 0);
+        const QString wrong = rbw::test::mismatch(
+            handValue(rbw::handEulerStep(in, Mistake::LeverArmFromOrigin), "torque"), {-0.25, 0.25, -0.2}, 1e-12);
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong));
+        const QString right = rbw::test::mismatch(handValue(rbw::handEulerStep(in), "torque"), {-0.25, 0.25, -1.2}, 1e-12);
+        QVERIFY2(right.isEmpty(), qPrintable(right));
+    }
+
+    // Transposed inertia at r = 30 deg about z (where the two orders differ): L0 = 0 so r
+    // does not turn, f = (0, 0, 1) at p = (0, 0.5, 0) gives q = (0.5, 0, 0), L' = (1, 0, 0).
+    // With a, b = 9.836066, 4.8 and c, s = cos 30, sin 30:
+    //   R I0^-1 R^T = [[a c^2 + b s^2, (a - b) c s, 0], [(a - b) c s, a s^2 + b c^2, 0], [0, 0, 4.411765]]
+    //   a c^2 + b s^2 = 8.577049,  (a - b) c s = 2.180681
+    // so omega' = (8.577049, 2.180681, 0) and, transposed, (8.577049, -2.180681, 0).
+    void transposedInertia()
+    {
+        rbw::BodyStepInputs in = table21();
+        in.q_WB = Quat(Eigen::AngleAxisd(M_PI / 6, Vec3::UnitZ()));
+        in.forces = {{Vec3(0, 0.5, 0), Vec3(0, 0, 1)}};
+        const QString right =
+            rbw::test::mismatch(handValue(rbw::handEulerStep(in), "angular_velocity"), {8.577049, 2.180681, 0}, 1e-6);
+        QVERIFY2(right.isEmpty(), qPrintable(right));
+        const QString wrong = rbw::test::mismatch(
+            handValue(rbw::handEulerStep(in, Mistake::TransposedInertia), "angular_velocity"), {8.577049, -2.180681, 0},
+            1e-6);
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong));
+    }
+
+    // The quaternion mistakes need a spin: r = 1, omega0 = (1, 0, 0) (L = (I0_xx, 0, 0)),
+    // h = 0.1: right normalise(1, 0.05, 0, 0) = (0.9987523, 0.0499376, 0, 0); without the
+    // half normalise(1, 0.1, 0, 0) = (0.9950372, 0.0995037, 0, 0); not normalised (1, 0.05, 0, 0).
+    void quaternionMistakes_data()
+    {
+        QTest::addColumn<Mistake>("mistake");
+        QTest::addColumn<QList<double>>("expected");
+        QTest::newRow("correct") << Mistake::None << QList<double>{0.9987523, 0.0499376, 0, 0};
+        QTest::newRow("quaternion-missing-half") << Mistake::QuaternionMissingHalf
+                                                 << QList<double>{0.9950372, 0.0995037, 0, 0};
+        QTest::newRow("quaternion-not-normalised") << Mistake::QuaternionNotNormalised
+                                                   << QList<double>{1, 0.05, 0, 0};
+    }
+
+    void quaternionMistakes()
+    {
+        QFETCH(Mistake, mistake);
+        QFETCH(QList<double>, expected);
+        rbw::BodyStepInputs in = table21();
+        in.q_WB = Quat::Identity();
+        in.forces.clear();
+        in.h = 0.1;
+        in.L_W = Vec3(0.61 / 6.0, 0, 0);
+        const QString m = rbw::test::mismatch(handValue(rbw::handEulerStep(in, mistake), "orientation"), expected, 1e-6);
+        QVERIFY2(m.isEmpty(), qPrintable(m));
+    }
+
+    void impulseMistake_data()
+    {
+        QTest::addColumn<Mistake>("mistake");
+        QTest::addColumn<QString>("id");
+        QTest::addColumn<QList<double>>("expected");
+        QTest::newRow("correct J = 64/27") << Mistake::None << "impulse" << QList<double>{64.0 / 27.0};
+        QTest::newRow("correct denominator 27/16") << Mistake::None << "denominator" << QList<double>{27.0 / 16.0};
+        // v_rel = v_B - v_A = (-2, 0, 0), J = -(1 + 1)(+2)/(27/16) = -64/27
+        QTest::newRow("relative-velocity-reversed v_rel") << Mistake::RelativeVelocityReversed << "relative_velocity"
+                                                          << QList<double>{-2, 0, 0};
+        QTest::newRow("relative-velocity-reversed J") << Mistake::RelativeVelocityReversed << "impulse"
+                                                      << QList<double>{-64.0 / 27.0};
+        // J = 4 / (0.5 + 1) = 8/3
+        QTest::newRow("impulse-linear-only") << Mistake::ImpulseLinearOnly << "impulse" << QList<double>{8.0 / 3.0};
+        // J = -1 * (-2) / (27/16) = 32/27
+        QTest::newRow("impulse-without-one-plus") << Mistake::ImpulseWithoutOnePlus << "impulse"
+                                                  << QList<double>{32.0 / 27.0};
+    }
+
+    void impulseMistake()
+    {
+        QFETCH(Mistake, mistake);
+        QFETCH(QString, id);
+        QFETCH(QList<double>, expected);
+        const QString m =
+            rbw::test::mismatch(impulseValue(rbw::handImpulse(lesson3(), mistake), qPrintable(id)), expected, 1e-12);
+        QVERIFY2(m.isEmpty(), qPrintable(m));
+    }
+
+    // Every model has a stable id, an equation and an explanation, and is found by its id.
+    void catalogue()
+    {
+        QCOMPARE(rbw::mistakeCatalogue().size(), size_t(15));
+        for (const rbw::MistakeInfo& m : rbw::mistakeCatalogue()) {
+            QVERIFY(rbw::findMistake(m.id) == &m);
+            QVERIFY(std::strlen(m.equation) > 0 && std::strlen(m.explanation) > 0);
+        }
+        QVERIFY(rbw::findMistake("no-such-mistake") == nullptr);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMistakes)
+#include "tst_mistakes.moc"
