@@ -1,0 +1,1 @@
+// The scene room of the broken tree.
