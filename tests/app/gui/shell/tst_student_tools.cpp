@@ -500,8 +500,7 @@ void TestStudentTools::lessonTextsMatchTheWindow()
     QCOMPARE(w.dockWidgetArea(traceDock), Qt::RightDockWidgetArea);
     bool open = false;
     for (QAction* a : w.findChildren<QAction*>()) open = open || a->shortcuts().contains(QKeySequence(QKeySequence::Open));
-    if (!open) QSKIP("File → Open (Ctrl+O) is not in this build yet (issue 12, item 1, another engineer's)");
-    QVERIFY(open);
+    QVERIFY2(open, "lesson 7 speaks of File → Open (Ctrl+O), but no action of the window has that shortcut");
 }
 
 // One colour per body in the 3D view, the plots and the table, from the one function:
