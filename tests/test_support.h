@@ -1,5 +1,6 @@
 // Helpers shared by the tests: compare trace values against hand-derived numbers,
-// and run the rbw command line.
+// near-comparisons that print what they compared (RBW_COMPARE_NEAR), and run the rbw
+// command line.
 #pragma once
 
 #include "app/scene/scene_loader.h"
@@ -10,6 +11,9 @@
 #include <QProcess>
 #include <QString>
 #include <QStringList>
+#include <QTest>
+
+#include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
@@ -73,6 +77,97 @@ inline QString mismatch(const QList<double>& actual, const QList<double>& expect
         }
     }
     return {};
+}
+
+// RBW_COMPARE_NEAR(actual, expected, tol[, context]): passes when
+// |actual - expected| <= tol. On failure it prints both values (17 significant digits),
+// their difference, the tolerance and the optional context (a QString or a C string),
+// and returns from the test function, as QVERIFY does (and, like it, honours
+// QEXPECT_FAIL). It takes doubles (and what converts to double) and Eigen vectors or
+// matrices; for those |actual - expected| is the Euclidean (Frobenius) norm of the
+// difference, exactly (actual - expected).norm(), and every component of both and of
+// the difference is printed. NaN never passes.
+// RBW_COMPARE_NEAR_STRICT is the same with |actual - expected| < tol, for a bound that
+// is meant strictly.
+#define RBW_COMPARE_NEAR(actual, expected, tol, ...)                                                          \
+    do {                                                                                                      \
+        if (!::rbw::test::compareNear((actual), (expected), (tol), ::rbw::test::NearBound::AtMost,           \
+                                      {#actual, #expected, #tol, __FILE__, __LINE__} __VA_OPT__(, ) __VA_ARGS__)) \
+            return;                                                                                           \
+    } while (false)
+#define RBW_COMPARE_NEAR_STRICT(actual, expected, tol, ...)                                                   \
+    do {                                                                                                      \
+        if (!::rbw::test::compareNear((actual), (expected), (tol), ::rbw::test::NearBound::Below,            \
+                                      {#actual, #expected, #tol, __FILE__, __LINE__} __VA_OPT__(, ) __VA_ARGS__)) \
+            return;                                                                                           \
+    } while (false)
+
+// What RBW_COMPARE_NEAR asks of the difference: at most the tolerance, or below it.
+enum class NearBound { AtMost, Below };
+
+// Where a comparison is written: its three expressions, file and line.
+struct NearSite {
+    const char* actual;
+    const char* expected;
+    const char* tol;
+    const char* file;
+    int line;
+};
+
+inline bool withinTolerance(double difference, double tol, NearBound bound)
+{
+    return bound == NearBound::AtMost ? difference <= tol : difference < tol;   // false for NaN
+}
+
+inline QString nearNumber(double x) { return QString::number(x, 'g', 17); }
+
+template <typename Derived>
+QString nearNumbers(const Eigen::MatrixBase<Derived>& m)
+{
+    QStringList parts;
+    for (Eigen::Index i = 0; i < m.rows(); ++i) {
+        for (Eigen::Index j = 0; j < m.cols(); ++j) parts << nearNumber(double(m(i, j)));
+    }
+    return QLatin1Char('(') + parts.join(QStringLiteral(", ")) + QLatin1Char(')');
+}
+
+// Reports a failed comparison through QTest::qVerify, as QVERIFY2 does; true only when
+// the failure was expected (QEXPECT_FAIL with Continue).
+inline bool failNear(const QString& actualText, const QString& expectedText, const QString& differenceText,
+                     double difference, double tol, NearBound bound, const NearSite& at, const QString& context)
+{
+    const char* op = bound == NearBound::AtMost ? "<=" : "<";
+    const QString statement = QStringLiteral("|%1 - (%2)| %3 %4").arg(QString::fromUtf8(at.actual),
+                                                                       QString::fromUtf8(at.expected),
+                                                                       QString::fromUtf8(op), QString::fromUtf8(at.tol));
+    const QString message = QStringLiteral("|difference| = %1, tolerance %2%3\n"
+                                           "   Actual   (%4): %5\n"
+                                           "   Expected (%6): %7\n"
+                                           "   Difference: %8")
+                                .arg(nearNumber(difference), nearNumber(tol),
+                                     context.isEmpty() ? QString() : QStringLiteral("; ") + context,
+                                     QString::fromUtf8(at.actual), actualText, QString::fromUtf8(at.expected),
+                                     expectedText, differenceText);
+    return QTest::qVerify(false, qPrintable(statement), qPrintable(message), at.file, at.line);
+}
+
+inline bool compareNear(double actual, double expected, double tol, NearBound bound, const NearSite& at,
+                        const QString& context = {})
+{
+    const double difference = std::abs(actual - expected);
+    if (withinTolerance(difference, tol, bound)) return true;
+    return failNear(nearNumber(actual), nearNumber(expected), nearNumber(actual - expected), difference, tol, bound,
+                    at, context);
+}
+
+template <typename A, typename B>
+bool compareNear(const Eigen::MatrixBase<A>& actual, const Eigen::MatrixBase<B>& expected, double tol, NearBound bound,
+                 const NearSite& at, const QString& context = {})
+{
+    const double difference = (actual - expected).norm();
+    if (withinTolerance(difference, tol, bound)) return true;
+    return failNear(nearNumbers(actual), nearNumbers(expected), nearNumbers(actual - expected), difference, tol, bound,
+                    at, context);
 }
 
 // A body definition for tests: a box with its initial state (world frame).

@@ -74,7 +74,7 @@ void TestCollisionLessons::lesson3HandCalculation()
     QCOMPARE(QString(t.contacts[0].feature), QString("vertex-face"));
     QVERIFY(near(vec(t, "normal", 0, 0), Vec3(-1, 0, 0), 1e-15));
     QVERIFY(near(vec(t, "point", 0, 0), Vec3(1.02, 0.5, 0), 1e-12));
-    QVERIFY(std::abs(value(t, "depth", 0, 0) - 0.01) < 1e-12);
+    RBW_COMPARE_NEAR_STRICT(value(t, "depth", 0, 0), 0.01, 1e-12);
     // x_a = p - x_A = (1.02 - 0.03, 0.5, 0) = (0.99, 0.5, 0);  x_b = p - x_B = (-sqrt(3)/2, 0, 0)
     QVERIFY(near(vec(t, "x_a", 0, 0), Vec3(0.99, 0.5, 0), 1e-12));
     QVERIFY(near(vec(t, "x_b", 1, 0), Vec3(-std::sqrt(3.0) / 2, 0, 0), 1e-12));
@@ -86,10 +86,10 @@ void TestCollisionLessons::lesson3HandCalculation()
     // (0,0,0.375) x x_a = (-0.1875, 0.37125, 0), . n = 0.1875 = 3/16; x_b || n -> 0.
     QCOMPARE(value(t, "inv_mass_a", 0, 0), 0.5);
     QCOMPARE(value(t, "inv_mass_b", 1, 0), 1.0);
-    QVERIFY(std::abs(value(t, "rotational_a", 0, 0) - 3.0 / 16) < 1e-12);
-    QVERIFY(std::abs(value(t, "rotational_b", 1, 0)) < 1e-12);
+    RBW_COMPARE_NEAR_STRICT(value(t, "rotational_a", 0, 0), 3.0 / 16, 1e-12);
+    RBW_COMPARE_NEAR_STRICT(value(t, "rotational_b", 1, 0), 0.0, 1e-12);
     // J = 4 / (0.5 + 1 + 3/16) = 4 / (27/16) = 64/27
-    QVERIFY(std::abs(value(t, "impulse", 0, 0) - 64.0 / 27) < 1e-12);
+    RBW_COMPARE_NEAR_STRICT(value(t, "impulse", 0, 0), 64.0 / 27, 1e-12);
     // v_A' = 1 - (64/27)/2 = -5/27;  v_B' = -1 + 64/27 = 37/27;  L_A' = (64/27)(0,0,0.5) = (0,0,32/27);
     // omega_A' = (3/4) L_A' = (0,0,8/9);  B's L and omega stay 0.
     QVERIFY(near(w.states()[0].v_W, Vec3(-5.0 / 27, 0, 0), 1e-12));
@@ -98,8 +98,8 @@ void TestCollisionLessons::lesson3HandCalculation()
     QVERIFY(near(w.states()[0].omega_W, Vec3(0, 0, 8.0 / 9), 1e-12));
     QVERIFY(near(w.states()[1].omega_W, Vec3::Zero(), 1e-12));
     // c = 1: kinetic energy 1/2 2 1 + 1/2 1 1 = 1.5 before and after.
-    QVERIFY(std::abs(value(t, "kinetic_energy_before", 0, 0) - 1.5) < 1e-12);
-    QVERIFY(std::abs(value(t, "kinetic_energy_after", 0, 0) - 1.5) < 1e-12);
+    RBW_COMPARE_NEAR_STRICT(value(t, "kinetic_energy_before", 0, 0), 1.5, 1e-12);
+    RBW_COMPARE_NEAR_STRICT(value(t, "kinetic_energy_after", 0, 0), 1.5, 1e-12);
 }
 
 void TestCollisionLessons::lesson6ContactCounts_data()

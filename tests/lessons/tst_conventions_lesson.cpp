@@ -110,8 +110,8 @@ void TestConventionsLesson::firstStep()
     // I^-1 row 0, column 1: +xy (standard), -xy (template); 0 at 90 degrees (up to cos 90 rounding).
     const QList<double> Is = traced(trace, "inverse_inertia_world", 0);
     const QList<double> It = traced(trace, "inverse_inertia_world", 1);
-    QVERIFY2(std::abs(Is[1] - Ixy) <= 1e-12 * 10, qPrintable(QString::number(Is[1], 'g', 17)));
-    QVERIFY2(std::abs(It[1] + Ixy) <= 1e-12 * 10, qPrintable(QString::number(It[1], 'g', 17)));
+    RBW_COMPARE_NEAR(Is[1], Ixy, 1e-12 * 10);
+    RBW_COMPARE_NEAR(It[1], -Ixy, 1e-12 * 10);
 }
 
 // At t = 0 omega0 is what the file says in either convention (L0 = I(r0) omega0 is

@@ -185,14 +185,14 @@ void TestLessonTexts::impulseExperiments()
     QVERIFY(text.contains("**−2.7 rad/s**") && text.contains("(0, 0, +2.7)") && text.contains("12.15 J"));
     World w(lessonScene("07-bounce/impulses.json"));
     stepN(w, 400);
-    QVERIFY(w.states()[bodyIndex(w, "stop")].v_W.norm() <= 1e-12);
-    QVERIFY((w.states()[bodyIndex(w, "reverse")].v_W - Vec3(-3, 0, 0)).norm() <= 1e-12);
+    RBW_COMPARE_NEAR(w.states()[bodyIndex(w, "stop")].v_W, Vec3::Zero(), 1e-12);
+    RBW_COMPARE_NEAR(w.states()[bodyIndex(w, "reverse")].v_W, Vec3(-3, 0, 0), 1e-12);
     const BodyState& cw = w.states()[bodyIndex(w, "spin-clockwise")];
     const BodyState& ccw = w.states()[bodyIndex(w, "spin-anticlockwise")];
-    QVERIFY((cw.L_W - Vec3(0, 0, -9)).norm() <= 1e-12);
-    QVERIFY((cw.omega_W - Vec3(0, 0, -2.7)).norm() <= 1e-12);
-    QVERIFY((ccw.omega_W - Vec3(0, 0, 2.7)).norm() <= 1e-12);
-    QVERIFY(cw.v_W.norm() <= 1e-12);
+    RBW_COMPARE_NEAR(cw.L_W, Vec3(0, 0, -9), 1e-12);
+    RBW_COMPARE_NEAR(cw.omega_W, Vec3(0, 0, -2.7), 1e-12);
+    RBW_COMPARE_NEAR(ccw.omega_W, Vec3(0, 0, 2.7), 1e-12);
+    RBW_COMPARE_NEAR(cw.v_W, Vec3::Zero(), 1e-12);
     QVERIFY(rounds(w.diagnostics().bodies[static_cast<size_t>(bodyIndex(w, "spin-clockwise"))].kinetic, 12.15, 2));
 }
 
@@ -206,8 +206,8 @@ void TestLessonTexts::projectile()
     const BodyState& s = w.states()[0];
     QVERIFY(rounds(s.x_W.y(), -3.5219, 4));
     const double exact = 8.0 * 2.0 - 0.5 * 9.81 * 4.0;
-    QVERIFY(std::abs((s.x_W.y() - exact) - 0.5 * 9.81 * 0.01 * 2.0) <= 1e-12);
-    QVERIFY((s.v_W - Vec3(3, -11.62, 0)).norm() <= 1e-12);
+    RBW_COMPARE_NEAR((s.x_W.y() - exact), 0.5 * 9.81 * 0.01 * 2.0, 1e-12);
+    RBW_COMPARE_NEAR(s.v_W, Vec3(3, -11.62, 0), 1e-12);
 }
 
 // constant-spin.md: ω stays (0, −1.5, 2.598) within 2e-15, T = 1.02 J, lag 4.5e-4 rad.
@@ -221,7 +221,7 @@ void TestLessonTexts::constantSpin()
     for (int k = 0; k < 200; ++k) {
         QVERIFY(w.step(&t).ok);
         QVERIFY((w.states()[0].omega_W - omega0).cwiseAbs().maxCoeff() <= 2e-15);
-        QVERIFY(std::abs(t.diagnostics.kinetic - 1.02) <= 1e-15);
+        RBW_COMPARE_NEAR(t.diagnostics.kinetic, 1.02, 1e-15);
     }
     QVERIFY(rounds(std::abs(200 * 2 * std::atan(0.015) - 6.0), 4.5e-4, 5));
 }

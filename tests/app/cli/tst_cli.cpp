@@ -110,9 +110,9 @@ void TestCli::lesson1TraceFields()
     QCOMPARE(quantity(step, "angular_velocity").value("unit").toString(), QString("rad/s"));
     const QJsonArray I0 = quantity(step, "inertia_body").value("value").toArray();
     // I0 = 2/12 diag(0.6^2 + 0.5^2, 1 + 0.5^2, 1 + 0.6^2) = diag(0.101667, 0.208333, 0.226667)
-    QVERIFY(std::abs(I0[0].toArray()[0].toDouble() - 0.61 / 6) < 1e-15);
-    QVERIFY(std::abs(I0[1].toArray()[1].toDouble() - 1.25 / 6) < 1e-15);
-    QVERIFY(std::abs(I0[2].toArray()[2].toDouble() - 1.36 / 6) < 1e-15);
+    RBW_COMPARE_NEAR_STRICT(I0[0].toArray()[0].toDouble(), 0.61 / 6, 1e-15);
+    RBW_COMPARE_NEAR_STRICT(I0[1].toArray()[1].toDouble(), 1.25 / 6, 1e-15);
+    RBW_COMPARE_NEAR_STRICT(I0[2].toArray()[2].toDouble(), 1.36 / 6, 1e-15);
     QVERIFY(close(quantity(step, "point_velocity", 0).value("value"), vec(-1.111861, 0.929412, 2.675410), 5e-7));
 
     // The state the step started from (issue 10): Table 2.1 starts at rest, turned 90°
@@ -126,7 +126,8 @@ void TestCli::lesson1TraceFields()
     QVERIFY(close(box0.value("angular_momentum"), vec(0, 0, 0), 0.0));
     const QJsonArray r0 = box0.value("orientation").toArray();
     QCOMPARE(r0.size(), 4);
-    QVERIFY(std::abs(r0[0].toDouble() - std::sqrt(0.5)) < 1e-15 && std::abs(r0[3].toDouble() - std::sqrt(0.5)) < 1e-15);
+    RBW_COMPARE_NEAR_STRICT(r0[0].toDouble(), std::sqrt(0.5), 1e-15);
+    RBW_COMPARE_NEAR_STRICT(r0[3].toDouble(), std::sqrt(0.5), 1e-15);
     QCOMPARE(box0.value("inverse_inertia_world").toArray().size(), 3);
     const QJsonArray probes0 = start.value("probes").toArray();
     QCOMPARE(probes0.size(), 2);
@@ -142,7 +143,7 @@ void TestCli::doublesRoundTrip()
     const QJsonObject box = QJsonDocument::fromJson(r.out).object().value("bodies").toArray()[0].toObject();
     const double omegaY = box.value("angular_velocity").toArray()[1].toDouble();
     QVERIFY(r.out.contains(QByteArray::number(omegaY, 'g', 17)) || r.out.contains(QByteArray::number(omegaY, 'g', 16)));
-    QVERIFY(std::abs(omegaY - 60.0 / 12.2) < 1e-14);
+    RBW_COMPARE_NEAR_STRICT(omegaY, 60.0 / 12.2, 1e-14);
 }
 
 void TestCli::traceModes_data()
@@ -167,7 +168,7 @@ void TestCli::traceModes()
         QCOMPARE(trace.last().toObject().value("step").toInt(), 4);
     }
     QCOMPARE(doc.value("steps").toInt(), 5);
-    QVERIFY(std::abs(doc.value("time").toDouble() - 0.05) < 1e-15);
+    RBW_COMPARE_NEAR_STRICT(doc.value("time").toDouble(), 0.05, 1e-15);
 }
 
 void TestCli::csv()

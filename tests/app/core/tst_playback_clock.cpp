@@ -4,6 +4,7 @@
 // hand in the row: debt += s Δt (Δt capped at 100 ms), steps = floor(debt / h), then
 // debt -= taken h, and debt = min(debt, h) when fewer steps were taken than asked.
 #include "app/core/playback_clock.h"
+#include "tests/test_support.h"
 
 #include <QtTest>
 
@@ -75,9 +76,9 @@ void TestPlaybackClock::oneTick()
     QCOMPARE(clock.debt(), 0.0);
     const int due = clock.stepsDue(wallMs, h);
     QCOMPARE(due, expectedDue);
-    QVERIFY2(std::abs(clock.debt() - debtBefore) < 1e-15, qPrintable(QString::number(clock.debt(), 'g', 17)));
+    RBW_COMPARE_NEAR_STRICT(clock.debt(), debtBefore, 1e-15);
     clock.stepsTaken(due, taken, h);
-    QVERIFY2(std::abs(clock.debt() - debtAfter) < 1e-15, qPrintable(QString::number(clock.debt(), 'g', 17)));
+    RBW_COMPARE_NEAR_STRICT(clock.debt(), debtAfter, 1e-15);
     QCOMPARE(clock.budgetMs(), 12.0);
 }
 

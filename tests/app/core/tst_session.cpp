@@ -313,9 +313,9 @@ void TestSession::pushActsForOneStep()
     QVERIFY(s.step());
     QVERIFY(s.pendingPushes().empty());
     // v = h f / M = 0.01 * 5 / 2 = 0.025 along +z
-    QVERIFY((s.world()->states()[0].v_W - Vec3(0, 0, 0.025)).norm() < 1e-15);
+    RBW_COMPARE_NEAR_STRICT(s.world()->states()[0].v_W, Vec3(0, 0, 0.025), 1e-15);
     QVERIFY(s.step());
-    QVERIFY((s.world()->states()[0].v_W - Vec3(0, 0, 0.025)).norm() < 1e-15);
+    RBW_COMPARE_NEAR_STRICT(s.world()->states()[0].v_W, Vec3(0, 0, 0.025), 1e-15);
 
     Session none;
     none.load(lessonScene("01-one-step/scene.json"));

@@ -182,9 +182,9 @@ private slots:
                     const double lo = ranges[c][0].toDouble(), hi = ranges[c][1].toDouble();
                     QVERIFY2(values[c] >= lo && values[c] <= hi, qPrintable(p + " out of range"));
                     const double k = (values[c] - lo) / step;
-                    QVERIFY2(std::abs(k - std::round(k)) < 1e-9, qPrintable(p + " not on the grid"));
+                    RBW_COMPARE_NEAR_STRICT(k, std::round(k), 1e-9, p + " not on the grid");
                     // at most 2 decimals in the file's text: x * 100 is whole
-                    QVERIFY(std::abs(values[c] * 100 - std::round(values[c] * 100)) < 1e-9);
+                    RBW_COMPARE_NEAR_STRICT(values[c] * 100, std::round(values[c] * 100), 1e-9);
                 }
             }
             // "paths": one value for all of them

@@ -296,10 +296,10 @@ void TestCustomStep::quaternionUpdate()
     QString why = mismatch(flat(r), expected, kRel);
     QVERIFY2(why.isEmpty(), qPrintable(QStringLiteral("r: ") + why));
     // r stays a unit quaternion (renormalised): |r| = 1 to 1e-15.
-    QVERIFY(std::abs(r.norm() - 1.0) <= 1e-15);
+    RBW_COMPARE_NEAR(r.norm(), 1.0, 1e-15);
     // The orientation really moved: the angle between r0 and r is not zero,
     // r0 . r = (3*3 + 1*2 + 1*0 + 1*1)/(sqrt12 sqrt14) = 12/sqrt168 = 0.9258201.
-    QVERIFY(std::abs(r0.dot(r) - 12.0 / std::sqrt(168.0)) <= 1e-12);
+    RBW_COMPARE_NEAR(r0.dot(r), 12.0 / std::sqrt(168.0), 1e-12);
 }
 
 void TestCustomStep::worldStateMatchesTrace()

@@ -96,13 +96,12 @@ void TestEnergyJump::largeDtStopsAtStep3()
         const rbw::StepStatus st = world.step();
         QVERIFY2(st.ok, st.message.c_str());
     }
-    QVERIFY(std::abs(world.diagnostics().kinetic - 101.0) <= 1e-12 * 101.0);
+    RBW_COMPARE_NEAR(world.diagnostics().kinetic, 101.0, 1e-12 * 101.0);
     const rbw::StepStatus st = world.step();
     if (!fires) {
         QVERIFY2(st.ok, st.message.c_str());
         // T after step 3 is the derived 2624.7575 J.
-        QVERIFY2(std::abs(world.diagnostics().kinetic - 2624.7575) <= 1e-9 * 2624.7575,
-                 qPrintable(QString::number(world.diagnostics().kinetic, 'g', 17)));
+        RBW_COMPARE_NEAR(world.diagnostics().kinetic, 2624.7575, 1e-9 * 2624.7575);
         return;
     }
     QVERIFY(!st.ok);
@@ -110,9 +109,9 @@ void TestEnergyJump::largeDtStopsAtStep3()
     QCOMPARE(st.body, 0);
     QCOMPARE(QString::fromStdString(st.quantity), QStringLiteral("kinetic_energy"));
     QCOMPARE(QString::fromStdString(st.kind), QStringLiteral("energy-jump"));
-    QVERIFY(std::abs(st.kineticBefore - 101.0) <= 1e-12 * 101.0);
-    QVERIFY(std::abs(st.kineticAfter - 2624.7575) <= 1e-9 * 2624.7575);
-    QVERIFY(std::abs(st.kineticBound - (factor * 101.0 + s.energyJumpFloor)) <= 1e-12 * factor * 101.0);
+    RBW_COMPARE_NEAR(st.kineticBefore, 101.0, 1e-12 * 101.0);
+    RBW_COMPARE_NEAR(st.kineticAfter, 2624.7575, 1e-9 * 2624.7575);
+    RBW_COMPARE_NEAR(st.kineticBound, (factor * 101.0 + s.energyJumpFloor), 1e-12 * factor * 101.0);
     const QString m = QString::fromStdString(st.message);
     QVERIFY2(m.contains("step 3") && m.contains("\"needle\"") && m.contains("kinetic_energy") &&
                  m.contains("smaller dt"),
@@ -151,7 +150,7 @@ void TestEnergyJump::blowUpJsonHasNoNaN()
     QCOMPARE(o.value("quantity").toString(), QStringLiteral("kinetic_energy"));
     const QByteArray text = QJsonDocument(o).toJson();
     QVERIFY2(!text.contains("nan") && !text.contains("inf"), text.constData());
-    QVERIFY(std::abs(o.value("kinetic_energy_after").toDouble() - 2624.7575) < 1e-6);
+    RBW_COMPARE_NEAR_STRICT(o.value("kinetic_energy_after").toDouble(), 2624.7575, 1e-6);
 }
 
 // Every lesson, including its drags and pushes by key (applyForceOnce each step),

@@ -206,10 +206,7 @@ void TestTable21::traceQuantity()
     if (!printed.isEmpty()) {
         QCOMPARE(printed.size(), expected.size());
         for (int i = 0; i < printed.size(); ++i) {
-            QVERIFY2(std::abs(printed[i] - expected[i]) <= 5e-7,
-                     qPrintable(QStringLiteral("hand value %1 disagrees with Table 2.1's %2")
-                                    .arg(expected[i], 0, 'g', 17)
-                                    .arg(printed[i])));
+            RBW_COMPARE_NEAR(printed[i], expected[i], 5e-7, "Table 2.1's printed value against the hand value");
         }
     }
 
@@ -240,11 +237,10 @@ void TestTable21::orientationUnchanged()
     // already unit quaternion, which can move each coefficient by at most a couple of
     // units in the last place: tolerance 4 * 2^-53 ~ 4.4e-16 per coefficient.
     const double tol = 4.0 * std::ldexp(1.0, -53);
-    QVERIFY2(std::abs(r1.w() - r0.w()) <= tol && std::abs(r1.x() - r0.x()) <= tol &&
-                 std::abs(r1.y() - r0.y()) <= tol && std::abs(r1.z() - r0.z()) <= tol,
-             qPrintable(QStringLiteral("r changed: %1 -> %2")
-                            .arg(listText({r0.w(), r0.x(), r0.y(), r0.z()}),
-                                 listText({r1.w(), r1.x(), r1.y(), r1.z()}))));
+    RBW_COMPARE_NEAR(r1.w(), r0.w(), tol, "r changed");
+    RBW_COMPARE_NEAR(r1.x(), r0.x(), tol, "r changed");
+    RBW_COMPARE_NEAR(r1.y(), r0.y(), tol, "r changed");
+    RBW_COMPARE_NEAR(r1.z(), r0.z(), tol, "r changed");
     // And the state the world keeps is the traced one.
     QCOMPARE(world.states()[0].q_WB.coeffs(), r1.coeffs());
 }

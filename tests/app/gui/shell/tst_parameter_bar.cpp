@@ -70,9 +70,9 @@ void TestParameterBar::controlsWriteThroughTheSession()
     bar.scaleDt(0.5);
     QCOMPARE(s.world()->scene().dt, 0.001);
     bar.stepRestitution(-1);
-    QVERIFY(std::abs(s.world()->scene().restitution - 0.25) < 1e-12);
+    RBW_COMPARE_NEAR_STRICT(s.world()->scene().restitution, 0.25, 1e-12);
     bar.stepFriction(+2);
-    QVERIFY(std::abs(s.world()->scene().friction - 0.35) < 1e-12);
+    RBW_COMPARE_NEAR_STRICT(s.world()->scene().friction, 0.35, 1e-12);
     bar.cycleIntegrator(+1);
     QVERIFY(s.world()->scene().integrator != "rk4");
     bar.cycleIntegrator(-1);

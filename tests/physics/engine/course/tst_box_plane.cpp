@@ -16,6 +16,7 @@
 #include <QtTest>
 
 #include "physics/engine/course/box_plane.h"
+#include "tests/test_support.h"
 
 #include <cmath>
 #include <numbers>
@@ -181,8 +182,7 @@ void TestBoxPlane::corners()
         const ContactGeometry& g = out[static_cast<size_t>(k)];
         QVERIFY2(near(g.p_W, points[k], tol),
                  qPrintable(QStringLiteral("contact %1 at %2, expected %3").arg(k).arg(vecText(g.p_W), vecText(points[k]))));
-        QVERIFY2(std::abs(g.depth - depth) <= tol,
-                 qPrintable(QStringLiteral("contact %1 depth %2, expected %3").arg(k).arg(g.depth, 0, 'g', 17).arg(depth)));
+        RBW_COMPARE_NEAR(g.depth, depth, tol, QStringLiteral("contact %1's depth").arg(k));
         QVERIFY(g.depth >= 0.0);
         // n is the plane normal, which points from the plane (B) to the box (A).
         QVERIFY(g.n_W == plane.n_W);
@@ -213,7 +213,7 @@ void TestBoxPlane::averageOfFaceContactsIsFaceCentre()
     const ContactGeometry avg = rbw::averageContact(out, 0, 4);
     QVERIFY2(near(avg.p_W, Vec3(3.0, -0.02, 1.0), 1e-12), qPrintable(vecText(avg.p_W)));
     QVERIFY(avg.n_W == Vec3(0, 1, 0));
-    QVERIFY(std::abs(avg.depth - 0.02) <= 1e-12);
+    RBW_COMPARE_NEAR(avg.depth, 0.02, 1e-12);
     QCOMPARE(static_cast<int>(avg.feature), static_cast<int>(ContactFeature::VertexPlane));
 }
 
@@ -229,7 +229,7 @@ void TestBoxPlane::averageOfEdgeContactsIsEdgeMidpoint()
     QCOMPARE(rbw::collideBoxPlane(cube, ground(), out), 2);
     const ContactGeometry avg = rbw::averageContact(out, 2, 2);
     QVERIFY2(near(avg.p_W, Vec3(0.0, -0.02, 0.0), 1e-12), qPrintable(vecText(avg.p_W)));
-    QVERIFY(std::abs(avg.depth - 0.02) <= 1e-12);
+    RBW_COMPARE_NEAR(avg.depth, 0.02, 1e-12);
 }
 
 // Unequal depths (a tilted landing): hand-made contacts at (0,-0.01,0), (1,-0.03,0),

@@ -4,6 +4,7 @@
 #include "physics/engine/body.h"
 #include "physics/engine/course/impulse.h"
 #include "physics/engine/diagnostics.h"
+#include "tests/test_support.h"
 
 #include <QtTest>
 
@@ -86,11 +87,11 @@ void TestImpulse::bothBodiesRotate()
     // x_a x n = (0.5,0.25,0) x (-1,0,0) = (0, 0, 0.25); I^-1 (.) = (0, 0, 1.5);
     // (0,0,1.5) x x_a = (-0.375, 0.75, 0); . n = 0.375.  B: x_b x n = (0,0,-0.25) ->
     // (0,0,-1.5) x x_b = (-0.375, 0.75, 0); . n = 0.375.
-    QVERIFY(std::abs(r.rotationalA - 0.375) < kExact);
-    QVERIFY(std::abs(r.rotationalB - 0.375) < kExact);
+    RBW_COMPARE_NEAR_STRICT(r.rotationalA, 0.375, kExact);
+    RBW_COMPARE_NEAR_STRICT(r.rotationalB, 0.375, kExact);
     // denominator = 1 + 1 + 0.375 + 0.375 = 2.75;  J = 3 / 2.75 = 12/11
-    QVERIFY(std::abs(r.denominator - 2.75) < kExact);
-    QVERIFY(std::abs(r.J - 12.0 / 11.0) < kExact);
+    RBW_COMPARE_NEAR_STRICT(r.denominator, 2.75, kExact);
+    RBW_COMPARE_NEAR_STRICT(r.J, 12.0 / 11.0, kExact);
     // v_A' = 1 - 12/11 = -1/11, v_B' = -1 + 12/11 = 1/11
     QVERIFY(near(A.s.v_W, Vec3(-1.0 / 11, 0, 0), kExact));
     QVERIFY(near(B.s.v_W, Vec3(1.0 / 11, 0, 0), kExact));
@@ -103,7 +104,7 @@ void TestImpulse::bothBodiesRotate()
     // Check of the whole: after the impulse v_rel . n = -c (v_rel . n before) = 1.
     const Vec3 vA = A.s.v_W + A.s.omega_W.cross(r.x_a);
     const Vec3 vB = B.s.v_W + B.s.omega_W.cross(r.x_b);
-    QVERIFY(std::abs((vA - vB).dot(Vec3(-1, 0, 0)) - 1.0) < 1e-13);
+    RBW_COMPARE_NEAR_STRICT((vA - vB).dot(Vec3(-1, 0, 0)), 1.0, 1e-13);
 }
 
 void TestImpulse::fixedBodyIsInfiniteMass()
@@ -116,7 +117,7 @@ void TestImpulse::fixedBodyIsInfiniteMass()
                                                 {&B.s, &B.mp}, 0.5, 0.0);
     QCOMPARE(r.invMassB, 0.0);
     QCOMPARE(r.rotationalB, 0.0);
-    QVERIFY(std::abs(r.J - 24.0 / 11.0) < kExact);
+    RBW_COMPARE_NEAR_STRICT(r.J, 24.0 / 11.0, kExact);
     QCOMPARE(B.s.v_W, Vec3::Zero().eval());
     QCOMPARE(B.s.L_W, Vec3::Zero().eval());
     // v_A' = 2 - 24/11 = -2/11
@@ -173,7 +174,7 @@ void TestImpulse::conservation()
     QVERIFY2(near(after.P_W, before.P_W, 1e-12), "total linear momentum changed");
     QVERIFY2(near(after.L_O_W, before.L_O_W, 1e-12), "angular momentum about the origin changed");
     if (c == 1.0 && mu == 0.0) {
-        QVERIFY(std::abs(after.kinetic - before.kinetic) <= 1e-12 * before.kinetic);
+        RBW_COMPARE_NEAR(after.kinetic, before.kinetic, 1e-12 * before.kinetic);
     } else {
         QVERIFY(after.kinetic < before.kinetic);
     }
@@ -207,10 +208,9 @@ void TestImpulse::centralImpactEnergyLoss()
     const ImpulseResult r = applyContactImpulse(contactAt(Vec3::Zero(), Vec3(-1, 0, 0)), {&A.s, &A.mp},
                                                 {&B.s, &B.mp}, c, 0.0);
     const double reduced = m1 * m2 / (m1 + m2);
-    QVERIFY(std::abs(r.J - (1 + c) * reduced * u) < 1e-13);
+    RBW_COMPARE_NEAR_STRICT(r.J, (1 + c) * reduced * u, 1e-13);
     const double lost = before - pairDiagnostics(A, B).kinetic;
-    QVERIFY2(std::abs(lost - 0.5 * reduced * (1 - c * c) * u * u) < 1e-13,
-             qPrintable(QString("lost %1").arg(lost)));
+    RBW_COMPARE_NEAR_STRICT(lost, 0.5 * reduced * (1 - c * c) * u * u, 1e-13);
 }
 
 void TestImpulse::friction_data()
@@ -236,8 +236,8 @@ void TestImpulse::friction()
     Body A = makeBody(Vec3::Ones(), 1, Vec3(0, 0.5, 0), Vec3(2, -1, 0));
     const ImpulseResult r = applyContactImpulse(contactAt(Vec3(0, 0, 0), Vec3(0, 1, 0)), {&A.s, &A.mp},
                                                 ResponseBody{}, 0.0, mu);
-    QVERIFY(std::abs(r.J - 1.0) < kExact);
-    QVERIFY(std::abs(r.J_t - expectedJt) < kExact);
+    RBW_COMPARE_NEAR_STRICT(r.J, 1.0, kExact);
+    RBW_COMPARE_NEAR_STRICT(r.J_t, expectedJt, kExact);
     QCOMPARE(r.frictionClamped, clamped);
     QVERIFY(near(r.t_W, Vec3(-1, 0, 0), kExact));
     // v'' = (2 - J_t, 0, 0); L = x_a x (-J_t, 0, 0) = (0, 0, -0.5 J_t); omega_z = -3 J_t
@@ -246,7 +246,7 @@ void TestImpulse::friction()
     // Sticking leaves the contact point at rest: 1.2 + (-2.4)(0.5) = 0.
     const double slip = (A.s.v_W + A.s.omega_W.cross(r.x_a)).x();
     if (!clamped) {
-        QVERIFY(std::abs(slip) < 1e-13);
+        RBW_COMPARE_NEAR_STRICT(slip, 0.0, 1e-13);
     } else {
         QVERIFY(slip > 0.0);   // still sliding in the same direction, slower
     }
@@ -261,7 +261,7 @@ void TestImpulse::particleResponseLeavesSpinAlone()
     const ImpulseResult r = applyContactImpulse(contactAt(Vec3(0.4, 0, 0.3), Vec3(0, 1, 0)),
                                                 {&A.s, &A.mp, false}, ResponseBody{}, 1.0, 0.0);
     QCOMPARE(r.rotationalA, 0.0);
-    QVERIFY(std::abs(r.J - 4.0) < kExact);
+    RBW_COMPARE_NEAR_STRICT(r.J, 4.0, kExact);
     QCOMPARE(A.s.L_W, L0);
     QVERIFY(near(A.s.v_W, Vec3(0, 2, 0), kExact));
 }

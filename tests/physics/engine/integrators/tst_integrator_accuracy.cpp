@@ -9,6 +9,7 @@
 #include "physics/engine/integrators/rotation_matrix.h"
 #include "physics/workbook/reference/dzhanibekov.h"
 #include "physics/workbook/reference/symmetric_top.h"
+#include "tests/test_support.h"
 
 #include <cmath>
 
@@ -133,8 +134,7 @@ void TestIntegratorAccuracy::convergenceOrder()
     const double e1 = topError(*integrator, 80);
     const double e2 = topError(*integrator, 160);
     const double p = std::log2(e1 / e2);
-    QVERIFY2(std::abs(p - expectedOrder) <= 0.2,
-             qPrintable(QStringLiteral("%1: measured order %2 (errors %3, %4)").arg(name).arg(p).arg(e1).arg(e2)));
+    RBW_COMPARE_NEAR(p, expectedOrder, 0.2, QStringLiteral("%1: the measured order (errors %2, %3)").arg(name).arg(e1).arg(e2));
 }
 
 // Negative control: RK4 turning the wrong way has an O(1) error that does not shrink
@@ -210,12 +210,11 @@ void TestIntegratorAccuracy::dzhanibekovFlips()
     QCOMPARE(r.flips.size(), exact.size());
     QVERIFY(exact.size() >= 5);
     for (size_t i = 0; i < exact.size(); ++i) {
-        QVERIFY2(std::abs(r.flips[i] - exact[i]) <= 0.05,
-                 qPrintable(QStringLiteral("flip %1 at %2, exact %3").arg(i).arg(r.flips[i]).arg(exact[i])));
+        RBW_COMPARE_NEAR(r.flips[i], exact[i], 0.05, QStringLiteral("flip %1").arg(i));
     }
     const double interval = r.flips[1] - r.flips[0];
     for (size_t i = 2; i < r.flips.size(); ++i) {
-        QVERIFY(std::abs((r.flips[i] - r.flips[i - 1]) - interval) <= 0.05);
+        RBW_COMPARE_NEAR((r.flips[i] - r.flips[i - 1]), interval, 0.05);
     }
 }
 
@@ -263,7 +262,7 @@ void TestIntegratorAccuracy::rotationMatrixBodyMomentumGrows()
     const Vec3 omega0 = b.s().omega_W;
     step(*integrator, b, h);
     const double expected = L.squaredNorm() + h * h * omega0.cross(L).squaredNorm();
-    QVERIFY(std::abs(bodyL(b.s()).squaredNorm() - expected) <= 64 * u * L.squaredNorm());
+    RBW_COMPARE_NEAR(bodyL(b.s()).squaredNorm(), expected, 64 * u * L.squaredNorm());
     double prev = bodyL(b.s()).norm();
     for (int k = 0; k < 2000; ++k) {
         step(*integrator, b, h);

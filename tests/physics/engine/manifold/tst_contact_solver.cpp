@@ -9,6 +9,7 @@
 #include "physics/engine/quantities.h"
 #include "physics/engine/scene.h"
 #include "physics/engine/world.h"
+#include "tests/test_support.h"
 
 #include <QtTest>
 
@@ -103,8 +104,8 @@ private slots:
         // sum lambda_n = M (g h + v_y), v_y the vertical velocity the step starts with: 0 in
         // step 0; in step 1 what step 0's iterations left, below 1e-8 m/s (they stop once
         // no impulse changes by more than 1e-9 N s; see the end of this test).
-        QVERIFY(std::abs(sum(scalars(first, "normal_impulse")) - kG * kH) < 1e-8);
-        QVERIFY(std::abs(sum(scalars(second, "normal_impulse")) - kG * kH) < 1e-8);
+        RBW_COMPARE_NEAR_STRICT(sum(scalars(first, "normal_impulse")), kG * kH, 1e-8);
+        RBW_COMPARE_NEAR_STRICT(sum(scalars(second, "normal_impulse")), kG * kH, 1e-8);
         // Step 1's warm start is step 0's accumulated impulse of the same feature id.
         std::map<double, double> lambdaById;
         const std::vector<double> ids1 = scalars(first, "feature_id");
@@ -116,8 +117,8 @@ private slots:
         for (std::size_t i = 0; i < ids2.size(); ++i) QCOMPARE(warm2[i], lambdaById.at(ids2[i]));
         // At rest after both steps, where it was: the iterations stop once no impulse
         // changes by more than 1e-9 N s, so v is left within a few 1e-9 m/s of 0 (M = 1).
-        QVERIFY(w.states()[0].v_W.norm() < 1e-8);
-        QVERIFY(std::abs(w.states()[0].x_W.y() - 0.5) < 1e-9);
+        RBW_COMPARE_NEAR_STRICT(w.states()[0].v_W, Vec3::Zero(), 1e-8);
+        RBW_COMPARE_NEAR_STRICT(w.states()[0].x_W.y(), 0.5, 1e-9);
     }
 
     // Coulomb's clamp. A box sliding at v0 along x: once the normal impulses add up to
@@ -145,8 +146,7 @@ private slots:
         World w(s);
         rbw::StepTrace t;
         w.step(&t);
-        QVERIFY2(std::abs(w.states()[0].v_W.x() - v1) < 1e-6,
-                 qPrintable(QStringLiteral("v_x = %1, expected %2").arg(w.states()[0].v_W.x(), 0, 'g', 12).arg(v1)));
+        RBW_COMPARE_NEAR_STRICT(w.states()[0].v_W.x(), v1, 1e-6);
         // Per point |lambda_t| <= mu lambda_n.
         std::vector<double> lambdaN = scalars(t, "normal_impulse");
         std::size_t k = 0;
@@ -472,7 +472,7 @@ private slots:
             w.step(&t);
             if (!t.contacts.empty()) ++contactSteps;
             const Vec3 P = 1.0 * w.states()[0].v_W + 3.0 * w.states()[1].v_W;
-            QVERIFY2((P - P0).norm() < 1e-12 * P0.norm(), qPrintable(QStringLiteral("step %1").arg(k)));
+            RBW_COMPARE_NEAR_STRICT(P, P0, 1e-12 * P0.norm(), QStringLiteral("step %1").arg(k));
         }
         QVERIFY(contactSteps > 0);
         QVERIFY((w.states()[0].v_W - Vec3(2.0, 0.0, 0.0)).norm() > 0.5);

@@ -8,6 +8,7 @@
 #include "physics/engine/collision/contact.h"
 #include "physics/engine/manifold/box_box_clip.h"
 #include "physics/engine/manifold/box_plane_manifold.h"
+#include "tests/test_support.h"
 
 #include <QtTest>
 
@@ -109,7 +110,7 @@ private slots:
         Manifold m;
         QVERIFY(rbw::collideBoxBoxManifold(A, B, 0.02, m));
         QCOMPARE(m.count, count);
-        QVERIFY((m.n_W - Vec3(0, -1, 0)).norm() < 1e-12);   // from B (above) to A
+        RBW_COMPARE_NEAR_STRICT(m.n_W, Vec3(0, -1, 0), 1e-12);   // from B (above) to A
         QCOMPARE(m.reference, rbw::ReferenceSide::A);         // A's top face is the reference
         for (const Vec3& p : points) {
             QVERIFY2(containsPoint(m, p, 1e-9), qPrintable(QStringLiteral("missing (%1, %2, %3)")
@@ -118,13 +119,13 @@ private slots:
         std::set<std::uint32_t> ids;
         for (int k = 0; k < m.count; ++k) {
             const rbw::ManifoldPoint& pt = m.points[static_cast<std::size_t>(k)];
-            QVERIFY(std::abs(pt.separation - -0.01) < 1e-9);   // 0.49 - 0.5
+            RBW_COMPARE_NEAR_STRICT(pt.separation, -0.01, 1e-9);   // 0.49 - 0.5
             // The anchors: on A's top face and on B, s = n . (pA - pB)
             const Vec3 pA_W = A.c_W + A.R_WB * pt.pA_A;
             const Vec3 pB_W = B.c_W + B.R_WB * pt.pB_B;
-            QVERIFY(std::abs(pA_W.y() - 0.5) < 1e-9);   // (on the face's plane)
-            QVERIFY(std::abs(pB_W.y() - 0.49) < 1e-9);
-            QVERIFY(std::abs(m.n_W.dot(pA_W - pB_W) - pt.separation) < kTol);
+            RBW_COMPARE_NEAR_STRICT(pA_W.y(), 0.5, 1e-9);   // (on the face's plane)
+            RBW_COMPARE_NEAR_STRICT(pB_W.y(), 0.49, 1e-9);
+            RBW_COMPARE_NEAR_STRICT(m.n_W.dot(pA_W - pB_W), pt.separation, kTol);
             ids.insert(pt.feature);
         }
         QCOMPARE(static_cast<int>(ids.size()), m.count);   // one id per point
@@ -149,7 +150,7 @@ private slots:
         Manifold m;
         QVERIFY(rbw::collideBoxBoxManifold(A, box(Vec3(0, 1.01, 0), Quat::Identity(), Vec3::Constant(0.5)), 0.02, m));
         QCOMPARE(m.count, 4);
-        QVERIFY(std::abs(m.points[0].separation - 0.01) < 1e-12);
+        RBW_COMPARE_NEAR_STRICT(m.points[0].separation, 0.01, 1e-12);
     }
 
     // The reduction keeps the deepest point and spans the polygon.
@@ -198,9 +199,9 @@ private slots:
         QCOMPARE(m.count, count);
         for (int k = 0; k < m.count; ++k) {
             const rbw::ManifoldPoint& p = m.points[static_cast<std::size_t>(k)];
-            QVERIFY(std::abs(p.separation - deepest) < 1e-9);
+            RBW_COMPARE_NEAR_STRICT(p.separation, deepest, 1e-9);
             QVERIFY(p.feature < 8);
-            QVERIFY(std::abs(p.pB_B.y()) < kTol);   // B's anchor lies on the plane
+            RBW_COMPARE_NEAR_STRICT(p.pB_B.y(), 0.0, kTol);   // B's anchor lies on the plane
         }
     }
 };

@@ -4,6 +4,7 @@
 // slide and the manifold model holds still.
 #include "physics/workbook/lab/contact_study.h"
 #include "physics/engine/world.h"
+#include "tests/test_support.h"
 
 #include <QtTest>
 
@@ -74,9 +75,9 @@ void TestContactStudy::measure()
     s.bodies[0].v0_W = vA;
     const World w(s);
     const ContactMeasure m = measureContacts(s, w.massProperties(), w.states());
-    QVERIFY2(std::abs(m.deepestOverlap - overlap) < 1e-12, qPrintable(QString::number(m.deepestOverlap)));
-    QVERIFY2(std::abs(m.deepestBelow - below) < 1e-12, qPrintable(QString::number(m.deepestBelow)));
-    QVERIFY(std::abs(m.kineticEnergy - kinetic) < 1e-15);
+    RBW_COMPARE_NEAR_STRICT(m.deepestOverlap, overlap, 1e-12);
+    RBW_COMPARE_NEAR_STRICT(m.deepestBelow, below, 1e-12);
+    RBW_COMPARE_NEAR_STRICT(m.kineticEnergy, kinetic, 1e-15);
     QCOMPARE(m.moving, moving);
 }
 
@@ -96,7 +97,7 @@ void TestContactStudy::problemScenes()
     const SceneDef rain = contactProblemScene(ContactProblem::Rain, ContactModel::Course, 250);
     QCOMPARE(rain.bodies.size(), size_t(250));
     // Box 249 is k = 49 of layer 2: x = 1.5 (9 - 4.5), y = 3 + 1.5 * 2, z = 1.5 (4 - 4.5).
-    QVERIFY((rain.bodies[249].x0_W - Vec3(6.75, 6.0, -0.75)).norm() < 1e-15);
+    RBW_COMPARE_NEAR_STRICT(rain.bodies[249].x0_W, Vec3(6.75, 6.0, -0.75), 1e-15);
     QVERIFY(!contactProblemFromName("pile").has_value());
     // At rest as placed: nothing overlaps at the start of the tower.
     const SceneDef tower = contactProblemScene(ContactProblem::Tower, ContactModel::Course);

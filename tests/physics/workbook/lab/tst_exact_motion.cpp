@@ -114,7 +114,7 @@ void TestExactMotion::kinds()
     const rbw::reference::ExactState s0 = m->at(0.0);
     QVERIFY((s0.x_W - scene.bodies[0].x0_W).norm() == 0.0);
     QVERIFY((s0.v_W - scene.bodies[0].v0_W).norm() == 0.0);
-    QVERIFY((s0.omega_W - scene.bodies[0].omega0_W).norm() <= 1e-14 * scene.bodies[0].omega0_W.norm());
+    RBW_COMPARE_NEAR(s0.omega_W, scene.bodies[0].omega0_W, 1e-14 * scene.bodies[0].omega0_W.norm());
     QVERIFY(rbw::lab::orientationAngle(s0.q_WB, scene.bodies[0].q0_WB) <= 1e-14);
 }
 
@@ -179,9 +179,9 @@ void TestExactMotion::exactAnswerSolvesItsEquations()
     // |L| and T of the exact state stay those of t = 0
     const rbw::reference::ExactState s0 = m->at(0.0);
     const rbw::reference::ExactState s = m->at(t);
-    QVERIFY(std::abs(s.L_W.norm() - s0.L_W.norm()) <= 1e-13 * s0.L_W.norm());
+    RBW_COMPARE_NEAR(s.L_W.norm(), s0.L_W.norm(), 1e-13 * s0.L_W.norm());
     const double T0 = 0.5 * s0.omega_W.dot(s0.L_W);
-    QVERIFY(std::abs(0.5 * s.omega_W.dot(s.L_W) - T0) <= 1e-12 * T0);
+    RBW_COMPARE_NEAR(0.5 * s.omega_W.dot(s.L_W), T0, 1e-12 * T0);
 }
 
 // Negative control: the same check fails for an omega taken 0.01 s late, an error the
@@ -207,7 +207,7 @@ void TestExactMotion::constantSpinWorkedNumbers()
     const Quat turn(std::cos(3.0), n.x() * std::sin(3.0), n.y() * std::sin(3.0), n.z() * std::sin(3.0));
     const Quat expected = turn * scene.bodies[0].q0_WB;
     QVERIFY(rbw::lab::orientationAngle(m->at(2.0).q_WB, expected) <= 1e-14);
-    QVERIFY((m->at(2.0).omega_W - 3.0 * n).norm() <= 1e-15 * 3.0 * 4);
+    RBW_COMPARE_NEAR(m->at(2.0).omega_W, 3.0 * n, 1e-15 * 3.0 * 4);
 }
 
 QTEST_APPLESS_MAIN(TestExactMotion)

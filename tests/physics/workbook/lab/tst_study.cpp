@@ -106,8 +106,7 @@ void TestStudy::constantSpinClosedForm()
     const double expected = std::abs(double(N) * turn - w * T);
     QVERIFY(row.orientationError.has_value());
     // rounding: about 1e-16 per step in the quaternion, and the angle itself
-    QVERIFY2(std::abs(*row.orientationError - expected) <= 1e-13 + double(N) * 1e-15,
-             qPrintable(QString("%1 vs %2").arg(*row.orientationError, 0, 'g', 17).arg(expected, 0, 'g', 17)));
+    RBW_COMPARE_NEAR(*row.orientationError, expected, 1e-13 + double(N) * 1e-15);
     QVERIFY(*row.omegaError <= 1e-13);
     QCOMPARE(*row.positionError, 0.0);   // at rest at the origin, exactly
     QVERIFY(*row.energyDrift <= 1e-14);
@@ -126,7 +125,7 @@ void TestStudy::projectilePositionClosedForm()
         QVERIFY(row.positionError.has_value());
         if (row.integrator == "explicit-euler") {
             const double expected = 0.5 * 9.81 * row.dt * T;
-            QVERIFY2(std::abs(*row.positionError - expected) <= 1e-12, qPrintable(QString::number(*row.positionError)));
+            RBW_COMPARE_NEAR(*row.positionError, expected, 1e-12);
         } else {
             QVERIFY2(*row.positionError <= 1e-12, qPrintable(QString::number(*row.positionError)));
         }
@@ -163,8 +162,8 @@ void TestStudy::convergenceOrder()
     QCOMPARE(int(r.rows.size()), 2);
     const double pq = std::log2(*r.rows[0].orientationError / *r.rows[1].orientationError);
     const double pw = std::log2(*r.rows[0].omegaError / *r.rows[1].omegaError);
-    QVERIFY2(std::abs(pq - order) <= 0.3, qPrintable(QString("orientation order %1").arg(pq)));
-    QVERIFY2(std::abs(pw - order) <= 0.3, qPrintable(QString("omega order %1").arg(pw)));
+    RBW_COMPARE_NEAR(pq, order, 0.3, "the orientation error's order");
+    RBW_COMPARE_NEAR(pw, order, 0.3, "the omega error's order");
 }
 
 // ---------------------------------------------------------------------------------

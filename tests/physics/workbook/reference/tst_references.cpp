@@ -16,6 +16,7 @@
 #include "physics/workbook/reference/dzhanibekov.h"
 #include "physics/workbook/reference/projectile.h"
 #include "physics/workbook/reference/symmetric_top.h"
+#include "tests/test_support.h"
 
 #include <cmath>
 
@@ -109,12 +110,12 @@ void TestReferences::constantSpin()
     for (double t : {0.3, 1.0, 2.7}) {
         const Eigen::Vector4d fd = quatRateFd([&](double s) { return spin->orientation(s); }, t);
         const Eigen::Vector4d exact = quatRate(omega_W, spin->orientation(t));
-        QVERIFY2((fd - exact).norm() <= kFdTol * std::abs(rate), qPrintable(QString::number(t)));
-        QVERIFY(std::abs(spin->orientation(t).norm() - 1.0) <= 4 * u);
+        RBW_COMPARE_NEAR(fd, exact, kFdTol * std::abs(rate), QStringLiteral("t = %1").arg(t));
+        RBW_COMPARE_NEAR(spin->orientation(t).norm(), 1.0, 4 * u);
     }
     // L = R0 I0 R0^T omega = rate * I_axis * (q0 axis_B): parallel to omega
     const double Iaxis = I.dot(axis_B.cwiseAbs());
-    QVERIFY((spin->L_W() - Iaxis * omega_W).norm() <= 8 * u * Iaxis * std::abs(rate));
+    RBW_COMPARE_NEAR(spin->L_W(), Iaxis * omega_W, 8 * u * Iaxis * std::abs(rate));
 }
 
 // Negative control: a spin off the principal axes does not stay constant, and the
@@ -140,16 +141,16 @@ void TestReferences::projectile()
     QVERIFY2(spin, error.c_str());
     const ref::Projectile p(Vec3(1, 2, 3), Vec3(4, 5, 0), Vec3(0, -9.81, 0), *spin);
     const ref::ExactState s = p.at(2.0);
-    QVERIFY((s.x_W - Vec3(9, -7.62, 3)).norm() <= 64 * u);
-    QVERIFY((s.v_W - Vec3(4, -14.62, 0)).norm() <= 64 * u);
+    RBW_COMPARE_NEAR(s.x_W, Vec3(9, -7.62, 3), 64 * u);
+    RBW_COMPARE_NEAR(s.v_W, Vec3(4, -14.62, 0), 64 * u);
     for (double t : {0.0, 0.5, 2.0, 3.3}) {
         const double e = 0.5 * p.velocity(t).squaredNorm() - Vec3(0, -9.81, 0).dot(p.position(t));
-        QVERIFY2(std::abs(e - 40.12) <= 1e-13 * 40.12, qPrintable(QString::number(e, 'g', 17)));
+        RBW_COMPARE_NEAR(e, 40.12, 1e-13 * 40.12);
     }
     // x'' = g by FD (second difference; exact for a quadratic up to rounding u|x|/d^2)
     const double d = 1e-2;
     const Vec3 acc = (p.position(1.0 + d) - 2.0 * p.position(1.0) + p.position(1.0 - d)) / (d * d);
-    QVERIFY((acc - Vec3(0, -9.81, 0)).norm() <= 1e-9);
+    RBW_COMPARE_NEAR(acc, Vec3(0, -9.81, 0), 1e-9);
     QCOMPARE(angleBetween(s.q_WB, spin->orientation(2.0)), 0.0);
 }
 
@@ -164,12 +165,12 @@ void TestReferences::symmetricTopWorkedCase()
     const std::optional<ref::SymmetricTop> top =
         ref::SymmetricTop::make(3.0, 9.0, Quat::Identity(), Vec3(0, 5, 7), error);
     QVERIFY2(top, error.c_str());
-    QVERIFY(std::abs(top->Omega() - (-14.0 / 9.0)) <= 4 * u * 14.0 / 9.0);
-    QVERIFY(std::abs(top->precessionRate() - std::sqrt(74.0) / 3.0) <= 4 * u * 3.0);
+    RBW_COMPARE_NEAR(top->Omega(), (-14.0 / 9.0), 4 * u * 14.0 / 9.0);
+    RBW_COMPARE_NEAR(top->precessionRate(), std::sqrt(74.0) / 3.0, 4 * u * 3.0);
     const double tQuarter = 9.0 * M_PI / 28.0;
-    QVERIFY((top->L_B(tQuarter) - Vec3(-5, 0, 7)).norm() <= 1e-14 * 7.0);
+    RBW_COMPARE_NEAR(top->L_B(tQuarter), Vec3(-5, 0, 7), 1e-14 * 7.0);
     // T = 1/2 (25/3 + 49/9) = 1/2 (75 + 49)/9 = 62/9
-    QVERIFY(std::abs(top->kineticEnergy() - 62.0 / 9.0) <= 4 * u * 62.0 / 9.0);
+    RBW_COMPARE_NEAR(top->kineticEnergy(), 62.0 / 9.0, 4 * u * 62.0 / 9.0);
 }
 
 // Invariants and ODEs for several tops: |L_B(t)| = |L|, T constant (rounding of a
@@ -201,17 +202,17 @@ void TestReferences::symmetricTop()
     const Vec3 I(I1, I1, I3);
     const double L = L0_B.norm();
     const double T0 = top->kineticEnergy();
-    QVERIFY((top->L_B(0.0) - L0_B).norm() <= 1e-15 * 4 * L);
+    RBW_COMPARE_NEAR(top->L_B(0.0), L0_B, 1e-15 * 4 * L);
     for (double t : {0.1, 0.77, 2.0, 5.5}) {
         const QByteArray at = QByteArray::number(t);
-        QVERIFY2(std::abs(top->L_B(t).norm() - L) <= 1e-14 * L, at);
+        RBW_COMPARE_NEAR(top->L_B(t).norm(), L, 1e-14 * L, at);
         const Vec3 Lb = top->L_B(t);
-        QVERIFY2(std::abs(0.5 * Lb.dot(Lb.cwiseQuotient(I)) - T0) <= 1e-14 * T0, at);
+        RBW_COMPARE_NEAR(0.5 * Lb.dot(Lb.cwiseQuotient(I)), T0, 1e-14 * T0, at);
         QVERIFY2(eulerResidual([&](double s) { return top->L_B(s); }, I, t) <= kFdTol, at);
         const ref::ExactState st = top->at(t);
         const Eigen::Vector4d fd = quatRateFd([&](double s) { return top->orientation(s); }, t);
-        QVERIFY2((fd - quatRate(st.omega_W, st.q_WB)).norm() <= kFdTol * st.omega_W.norm(), at);
-        QVERIFY2((st.q_WB.conjugate() * top->L_W() - Lb).norm() <= 1e-13 * L, at);
+        RBW_COMPARE_NEAR(fd, quatRate(st.omega_W, st.q_WB), kFdTol * st.omega_W.norm(), at);
+        RBW_COMPARE_NEAR(st.q_WB.conjugate() * top->L_W(), Lb, 1e-13 * L, at);
     }
 }
 
@@ -248,23 +249,19 @@ void TestReferences::asymmetricTop()
     QCOMPARE(top->circlesAxis3(), circlesAxis3);
     const double L = L0_B.norm();
     const double T0 = 0.5 * L0_B.dot(L0_B.cwiseQuotient(I));
-    QVERIFY2((top->L_B(0.0) - L0_B).norm() <= 1e-12 * L,
-             qPrintable(QStringLiteral("L_B(0) = (%1, %2, %3)")
-                            .arg(top->L_B(0.0).x(), 0, 'g', 17)
-                            .arg(top->L_B(0.0).y(), 0, 'g', 17)
-                            .arg(top->L_B(0.0).z(), 0, 'g', 17)));
-    QVERIFY(std::abs(top->kineticEnergy() - T0) <= 1e-14 * T0);
+    RBW_COMPARE_NEAR(top->L_B(0.0), L0_B, 1e-12 * L);
+    RBW_COMPARE_NEAR(top->kineticEnergy(), T0, 1e-14 * T0);
     const double P = top->period();
     for (int i = 1; i <= 20; ++i) {
         const double t = 0.137 * i * P;   // spread over almost three periods
         const QByteArray at = QByteArray::number(t);
         const Vec3 Lb = top->L_B(t);
-        QVERIFY2(std::abs(Lb.norm() - L) <= 1e-12 * L, at);
-        QVERIFY2(std::abs(0.5 * Lb.dot(Lb.cwiseQuotient(I)) - T0) <= 1e-12 * T0, at);
+        RBW_COMPARE_NEAR(Lb.norm(), L, 1e-12 * L, at);
+        RBW_COMPARE_NEAR(0.5 * Lb.dot(Lb.cwiseQuotient(I)), T0, 1e-12 * T0, at);
         QVERIFY2(eulerResidual([&](double s) { return top->L_B(s); }, I, t) <= kFdTol, at);
     }
     // periodic: omega_B(t + P) = omega_B(t)
-    QVERIFY((top->L_B(0.3 + P) - top->L_B(0.3)).norm() <= 1e-10 * L);
+    RBW_COMPARE_NEAR(top->L_B(0.3 + P), top->L_B(0.3), 1e-10 * L);
 }
 
 void TestReferences::asymmetricTopRejectsBadInput()
@@ -291,15 +288,15 @@ void TestReferences::dzhanibekovCase()
     const ref::AsymmetricTop top = ref::dzhanibekov();
     const double twoT = 0.8 + 0.0001 / 9.0;
     const double k2 = 2.0 * (9.0 * twoT - 4.0001) / (4.0 * (4.0001 - 3.0 * twoT));
-    QVERIFY(std::abs(top.modulus() * top.modulus() - k2) <= 1e-14);
-    QVERIFY(std::abs(top.lambda() - std::sqrt(4.0 * (4.0001 - 3.0 * twoT) / 135.0)) <= 1e-15);
+    RBW_COMPARE_NEAR(top.modulus() * top.modulus(), k2, 1e-14);
+    RBW_COMPARE_NEAR(top.lambda(), std::sqrt(4.0 * (4.0001 - 3.0 * twoT) / 135.0), 1e-15);
     const std::vector<double> flips = top.signChangesOfOmega2(300.0);
     QVERIFY(flips.size() >= 5);
     const double K = top.quarterPeriod();
-    QVERIFY(std::abs(flips[0] - K / top.lambda()) <= 1e-9);
+    RBW_COMPARE_NEAR(flips[0], K / top.lambda(), 1e-9);
     for (size_t i = 0; i < flips.size(); ++i) {
         if (i > 0) {
-            QVERIFY(std::abs((flips[i] - flips[i - 1]) - 2.0 * K / top.lambda()) <= 1e-9);
+            RBW_COMPARE_NEAR((flips[i] - flips[i - 1]), 2.0 * K / top.lambda(), 1e-9);
         }
         QVERIFY(top.L_B(flips[i] - 0.05).y() * top.L_B(flips[i] + 0.05).y() < 0.0);
     }

@@ -8,6 +8,7 @@
 #include "app/gui/panels/plots/plot_series.h"
 #include "app/gui/panels/plots/quantity_series.h"
 #include "physics/engine/quantities.h"
+#include "tests/test_support.h"
 
 #include <QSet>
 #include <QTemporaryDir>
@@ -258,8 +259,8 @@ void TestPlotData::valueAxisRange()
     QFETCH(double, expectedMax);
     const ValueRange r = rbw::valueAxisRange(lo, hi);
     const double tol = 1e-12 * std::max(1.0, std::abs(expectedMax));
-    QVERIFY2(std::abs(r.min - expectedMin) <= tol, qPrintable(QString::number(r.min, 'g', 17)));
-    QVERIFY2(std::abs(r.max - expectedMax) <= tol, qPrintable(QString::number(r.max, 'g', 17)));
+    RBW_COMPARE_NEAR(r.min, expectedMin, tol);
+    RBW_COMPARE_NEAR(r.max, expectedMax, tol);
     QVERIFY(r.max - r.min > 0.0);
     QVERIFY(r.min <= lo && r.max >= hi);
 }
@@ -268,7 +269,7 @@ void TestPlotData::timeAxisRange()
 {
     // [0, 1.02 t_max]: t_max = 2 -> 2.04.
     QCOMPARE(rbw::timeAxisRange(2.0).min, 0.0);
-    QVERIFY(std::abs(rbw::timeAxisRange(2.0).max - 2.04) <= 1e-15);
+    RBW_COMPARE_NEAR(rbw::timeAxisRange(2.0).max, 2.04, 1e-15);
     // Nothing yet: [0, 1].
     QCOMPARE(rbw::timeAxisRange(0.0).max, 1.0);
 }

@@ -8,6 +8,7 @@
 #include "app/gui/panels/view/scene_view.h"
 #include "app/gui/panels/view/view_style.h"
 #include "physics/engine/world.h"
+#include "tests/test_support.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLContext>
@@ -23,12 +24,7 @@ using namespace rbw;
 
 namespace {
 
-SceneDef lessonScene(const QString& relative)
-{
-    const SceneLoadResult r = loadSceneFile(QStringLiteral(RBW_SOURCE_DIR "/lessons/") + relative);
-    if (!r.ok()) qFatal("%s", qPrintable(r.errors.join('\n')));
-    return *r.scene;
-}
+using rbw::test::lessonScene;   // a lesson's scene from the source tree (tests/test_support.h)
 
 // A world stepped `steps` times, and the trace of its last step.
 struct Stepped {
@@ -291,7 +287,7 @@ void TestSceneView::mouseOrbitsAndWheelZooms()
     QWheelEvent wheel(QPointF(320, 240), view.mapToGlobal(QPointF(320, 240)), QPoint(), QPoint(0, 240), Qt::NoButton,
                       Qt::NoModifier, Qt::NoScrollPhase, false);
     QCoreApplication::sendEvent(&view, &wheel);
-    QVERIFY(std::abs(view.camera().distance() - d0 * 0.85 * 0.85) < 1e-9 * d0);
+    RBW_COMPARE_NEAR_STRICT(view.camera().distance(), d0 * 0.85 * 0.85, 1e-9 * d0);
 }
 
 void TestSceneView::dragEmitsGrabSignals()
@@ -323,8 +319,7 @@ void TestSceneView::dragEmitsGrabSignals()
     const Vec3 target_W(targetQ.x(), targetQ.y(), targetQ.z());
     // The target lies on the plane through the hit point perpendicular to the view
     // direction, (target - hit) . forward = 0, and under the mouse.
-    QVERIFY2(std::abs((target_W - hit_W).dot(view.camera().forward())) < 1e-4,
-             qPrintable(QString::number((target_W - hit_W).dot(view.camera().forward()))));
+    RBW_COMPARE_NEAR_STRICT((target_W - hit_W).dot(view.camera().forward()), 0.0, 1e-4);
     QVERIFY(QLineF(view.projectToWidget(target_W), QPointF(to)).length() < 0.1);
     // Grabbing is not orbiting: the camera stayed.
     QVERIFY(QLineF(before, view.projectToWidget(corner_W)).length() < 1e-9);

@@ -9,6 +9,7 @@
 #include "app/gui/panels/view/view_snapshot.h"
 #include "physics/engine/quantities.h"
 #include "physics/engine/world.h"
+#include "tests/test_support.h"
 
 #include <QtTest>
 
@@ -19,12 +20,7 @@ using namespace rbw;
 
 namespace {
 
-SceneDef lessonScene(const QString& relative)
-{
-    const SceneLoadResult r = loadSceneFile(QStringLiteral(RBW_SOURCE_DIR "/lessons/") + relative);
-    if (!r.ok()) qFatal("%s", qPrintable(r.errors.join('\n')));
-    return *r.scene;
-}
+using rbw::test::lessonScene;   // a lesson's scene from the source tree (tests/test_support.h)
 
 bool near(const Vec3& a, const Vec3& b, double tol) { return (a - b).cwiseAbs().maxCoeff() <= tol; }
 
@@ -160,7 +156,7 @@ void TestViewGeometry::lesson3ContactAtItsCollisionStep()
     QVERIFY(c.n_W == std::get<Vec3>(t.find("normal", 0, 0)->value));
     QVERIFY(near(c.p_W, Vec3(1.02, 0.5, 0), 1e-12));
     QVERIFY(near(c.n_W, Vec3(-1, 0, 0), 1e-15));
-    QVERIFY(std::abs(c.J - 64.0 / 27) < 1e-12);
+    RBW_COMPARE_NEAR_STRICT(c.J, 64.0 / 27, 1e-12);
     // The impulse on A: J n = (-64/27, 0, 0).
     QVERIFY2(near(c.impulse_W, Vec3(-64.0 / 27, 0, 0), 1e-12), qPrintable(text(c.impulse_W)));
 }
@@ -224,8 +220,7 @@ void TestViewGeometry::impulseArrowsAreTheTracesImpulses()
     QVERIFY(c->total_W == Vec3(J * n + Jt));
     // Independent: what A's velocity changed by in this contact, times M_A.
     const double M = w.scene().bodies[frictionBody].mass;
-    QVERIFY2((M * dv - c->total_W).norm() <= 1e-12 * c->total_W.norm(),
-             qPrintable(text(M * dv) + " vs " + text(c->total_W)));
+    RBW_COMPARE_NEAR(M * dv, c->total_W, 1e-12 * c->total_W.norm());
     // Negative control: the normal impulse alone is not what was applied.
     QVERIFY((M * dv - c->impulse_W).norm() > 1e-6 * c->total_W.norm());
 
@@ -304,7 +299,7 @@ void TestViewGeometry::manifoldPointsAreDrawnWithBothImpulses()
             if (sign != 0.0 && c.bodyB >= 0) ++boxBox;
         }
         const Vec3 expected = h * std::get<Vec3>(F->value);
-        QVERIFY2((P - expected).norm() <= 1e-12 * expected.norm(), qPrintable(text(P) + " vs " + text(expected)));
+        RBW_COMPARE_NEAR(P, expected, 1e-12 * expected.norm());
         if (w.scene().bodies[b].name == "slider") {
             // Negative control: the sliding box's friction impulse is part of what was applied.
             QVERIFY((Pn - expected).norm() > 1e-3 * expected.norm());
@@ -350,7 +345,7 @@ void TestViewGeometry::stateArrowsAreTheState()
         }
     }
     QCOMPARE(omegaArrows, 2);   // both cubes spin (lessons/05-spinning)
-    QVERIFY(std::abs(longest - g.scales.refLength) <= 1e-12 * g.scales.refLength);
+    RBW_COMPARE_NEAR(longest, g.scales.refLength, 1e-12 * g.scales.refLength);
 }
 
 void TestViewGeometry::badTraceEntriesAreSkipped()
@@ -418,7 +413,7 @@ void TestViewGeometry::rayBoxHit()
     const std::optional<double> t = rbw::rayBoxHit(Ray{origin, dir.normalized()}, Vec3::Zero(), rotationZ(rotZDegrees),
                                                    Vec3::Constant(0.5));
     QCOMPARE(t.has_value(), hits);
-    if (hits) QVERIFY2(std::abs(*t - expectedT) < 1e-12, qPrintable(QString::number(*t, 'g', 17)));
+    if (hits) RBW_COMPARE_NEAR_STRICT(*t, expectedT, 1e-12);
 }
 
 void TestViewGeometry::pickTakesTheNearestBody()
@@ -463,10 +458,13 @@ void TestViewGeometry::planePatchOfLesson4Room()
     const Vec3 hi = Vec3::Constant(10);
     const std::vector<Vec3> ground = view::planePatch(planes, 0, lo, hi);
     QVERIFY(ground.size() >= 4);
-    QVERIFY(std::abs(area(ground, Vec3::UnitY()) - 36.0) < 1e-9);
-    for (const Vec3& p : ground) QVERIFY(std::abs(p.y()) < 1e-12 && std::abs(p.x()) <= 3 + 1e-12 && std::abs(p.z()) <= 3 + 1e-12);
+    RBW_COMPARE_NEAR_STRICT(area(ground, Vec3::UnitY()), 36.0, 1e-9);
+    for (const Vec3& p : ground) {
+        RBW_COMPARE_NEAR_STRICT(p.y(), 0.0, 1e-12);
+        QVERIFY(std::abs(p.x()) <= 3 + 1e-12 && std::abs(p.z()) <= 3 + 1e-12);   // inside the box
+    }
     const std::vector<Vec3> west = view::planePatch(planes, 1, lo, hi);
-    QVERIFY(std::abs(area(west, Vec3::UnitX()) - 60.0) < 1e-9);
+    RBW_COMPARE_NEAR_STRICT(area(west, Vec3::UnitX()), 60.0, 1e-9);
     // Negative control: a box entirely below the ground leaves no wall at all.
     QVERIFY(view::planePatch(planes, 1, Vec3::Constant(-10), Vec3(10, -1, 10)).empty());
 }
@@ -480,8 +478,9 @@ void TestViewGeometry::cameraProjectsTargetToCentre()
     cam.setDistance(7);
     cam.setAngles(30, 20);
     const Eigen::Vector4d clip = cam.projectionMatrix(1.5) * cam.viewMatrix() * Eigen::Vector4d(1, 2, 3, 1);
-    QVERIFY(std::abs(clip.x() / clip.w()) < 1e-12 && std::abs(clip.y() / clip.w()) < 1e-12);
-    QVERIFY(std::abs((cam.eye() - Vec3(1, 2, 3)).norm() - 7.0) < 1e-12);
+    RBW_COMPARE_NEAR_STRICT(clip.x() / clip.w(), 0.0, 1e-12);
+    RBW_COMPARE_NEAR_STRICT(clip.y() / clip.w(), 0.0, 1e-12);
+    RBW_COMPARE_NEAR_STRICT((cam.eye() - Vec3(1, 2, 3)).norm(), 7.0, 1e-12);
     // yaw 30, pitch 20: eye - target = 7 (cos20 sin30, sin20, cos20 cos30).
     const double c = std::cos(20 * M_PI / 180);
     QVERIFY(near(cam.eye() - Vec3(1, 2, 3), 7.0 * Vec3(c * 0.5, std::sin(20 * M_PI / 180), c * std::sqrt(3.0) / 2), 1e-12));
@@ -500,8 +499,8 @@ void TestViewGeometry::cameraRayRoundTrip()
         const Ray r = cam.rayThroughNdc(x, y, aspect);
         const Vec3 p = r.origin_W + 3.0 * r.dir_W;
         const Eigen::Vector4d clip = cam.projectionMatrix(aspect) * cam.viewMatrix() * Eigen::Vector4d(p.x(), p.y(), p.z(), 1);
-        QVERIFY(std::abs(clip.x() / clip.w() - x) < 1e-12);
-        QVERIFY(std::abs(clip.y() / clip.w() - y) < 1e-12);
+        RBW_COMPARE_NEAR_STRICT(clip.x() / clip.w(), x, 1e-12);
+        RBW_COMPARE_NEAR_STRICT(clip.y() / clip.w(), y, 1e-12);
     }
 }
 
@@ -515,8 +514,8 @@ void TestViewGeometry::arrowScaleLongestIsOneBox()
     const ViewSnapshot s = makeViewSnapshot(w, &t);
     const view::FrameGeometry g = view::buildFrameGeometry(s, {}, view::FrameOptions{});
     QCOMPARE(g.scales.refLength, 1.0);
-    QVERIFY(std::abs(g.scales.maxForce - std::sqrt(2.0)) < 1e-15);
-    QVERIFY(std::abs(view::arrowScale(g.scales.maxForce, g.scales.refLength) * std::sqrt(2.0) - 1.0) < 1e-15);
+    RBW_COMPARE_NEAR_STRICT(g.scales.maxForce, std::sqrt(2.0), 1e-15);
+    RBW_COMPARE_NEAR_STRICT(view::arrowScale(g.scales.maxForce, g.scales.refLength) * std::sqrt(2.0), 1.0, 1e-15);
     QCOMPARE(view::arrowScale(0.0, 1.0), 0.0);   // nothing to draw
     // One box = 12 triangles = 36 vertices; the force, the probes and their velocities
     // are arrows and balls in the overlay.
