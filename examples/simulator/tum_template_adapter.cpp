@@ -61,6 +61,14 @@ int main()
     const auto newScene = [&sim]() {
         sim = std::make_unique<RigidBodySystemSimulator>();
         sim->m_iTestCase = TESTCASEUSEDTORUNTEST;
+        // Bodies are numbered 0, 1, 2, ... in add_body order, so a new object must have
+        // none (the public tests need that too): build demo scenes in notifyCaseChanged.
+        if (sim->getNumberOfRigidBodies() != 0) {
+            std::fprintf(stderr, "tum_template_adapter: a new RigidBodySystemSimulator already has %d bodies; "
+                         "it must start empty (create demo scenes in notifyCaseChanged, not the constructor)\n",
+                         sim->getNumberOfRigidBodies());
+            std::exit(1);
+        }
     };
     newScene();
 
