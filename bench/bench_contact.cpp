@@ -11,7 +11,7 @@
 //   KE        kinetic energy, sum of 1/2 M |v|^2 + 1/2 omega . I omega          [J]
 //   moving    boxes faster than 0.01 m/s (and moving_01: faster than 0.1 m/s)   [-]
 //   overlap   the deepest box-box overlap: the smallest SAT overlap of each
-//             overlapping pair (collision/box_box_sat.h), the largest of those   [m]
+//             overlapping pair (course/box_box_sat.h), the largest of those      [m]
 //   below     how far the lowest box corner is below the ground                 [m]
 // Results and machine: docs/performance.md, "Contacts: the box rain".
 // Run: ./build/bench/rbw_bench_contact   (about a minute)

@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 lesson=${1:-01-one-step}
 seconds=${2:-5}
-app=./build/app/gui/rigid-workbook
+app=./build/app/gui/shell/rigid-workbook
 [ -x "$app" ] || { echo "build the app first (scripts/build.sh)" >&2; exit 1; }
 config=$(mktemp -d)
 trap 'rm -rf "$config"' EXIT

@@ -5,4 +5,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
-exec ./build/app/gui/rigid-workbook "$@"
+exec ./build/app/gui/shell/rigid-workbook "$@"

@@ -13,7 +13,7 @@ namespace rbw {
 struct IntegratorInfo {
     const char* name;
     const char* summary;   // one line: method, order, source
-    int order = 1;         // global order of accuracy: error ~ h^order (measured in tests/integrators)
+    int order = 1;         // global order of accuracy: error ~ h^order (measured in tests/physics/engine/integrators)
     const char* title = "";   // for headings: "classical Runge-Kutta (RK4)"
 };
 

@@ -22,7 +22,8 @@
 
 namespace rbw {
 
-// Stages of a step, in the order the pipeline runs them.
+// The groups of a step's trace entries (views order their groups by this); which stage
+// of the pipeline runs when: stages/pipeline_builder.cpp.
 enum class Stage { Forces, Integration, Collision, Correction, Probes };
 enum class Frame { None, World, Body };
 

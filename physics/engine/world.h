@@ -1,13 +1,11 @@
 // The world: a scene definition plus the mutable state of its bodies, and the
-// pipeline of stages that one step runs (stages/stage.h):
-//   [gravity] -> loads -> [energy bound] -> integration (one per integrator group)
-//   -> finite check -> [energy check] -> [box-box] -> [box-plane] -> [correction]
-//   -> [finite check] -> [probes].
+// pipeline of stages that one step runs (stages/stage.h).
 // The world decides once, in its constructor, which stages the scene needs
 // (pipeline(), built by stages/pipeline_builder.cpp): no gravity work without
 // gravity, no broad/narrow phase or response without a collidable pair, no plane
 // tests without a plane, no correction unless asked for, no probes stage without
-// probes. step() runs exactly that list. docs/architecture.md has the table.
+// probes. step() runs exactly that list. The order: stages/pipeline_builder.cpp;
+// docs/architecture.md has the table of stages.
 //
 // Data flows one way: SceneDef -> World -> step() -> StepTrace -> every view.
 // No view reaches back into the world to recompute a quantity.

@@ -1,5 +1,5 @@
 // Box-box contacts: sweep-and-prune on world AABBs, the course's SAT on each
-// overlapping pair (docs/references.md §2, collision/box_box_sat.h) and one impulse per
+// overlapping pair (docs/references.md §2, course/box_box_sat.h) and one impulse per
 // contact, with the lower-indexed body as A.
 #pragma once
 

@@ -1,6 +1,6 @@
 // One contact's response, shared by the box-box and box-plane stages: the pair's c and
 // mu (with the resting-contact threshold), the impulse with friction
-// (collision/impulse.cpp, which records its own numbers), and a queued position
+// (course/impulse.cpp, which records its own numbers), and a queued position
 // correction for a penetrating box pair (position_correction).
 #pragma once
 

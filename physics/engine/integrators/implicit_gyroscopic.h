@@ -19,7 +19,7 @@
 //
 // "Model only what a scene requires": when I0 = k E the term omega x I0 omega is
 // exactly zero, so the Newton step is skipped (the trace says so). The result is the
-// same as with the step, up to the rounding of R R^T (tests/integrators).
+// same as with the step, up to the rounding of R R^T (tests/physics/engine/integrators).
 //
 // Course-template convention: the gyroscopic term is the body-frame form of dL/dt = q
 // for a rigid body whose I^-1 is R I0^-1 R^T. The template's I^-1 = R^T I0^-1 R does

@@ -3,7 +3,7 @@
 // the orthogonal polar factor U V^T of the SVD U S V^T (Higham, "Computing the polar
 // decomposition", SIAM J. Sci. Stat. Comput. 7 (1986); it minimises ||R - Q||_F over
 // rotations Q, so no axis is preferred as in Gram-Schmidt). First order;
-// ||R^T R - E||_F stays at rounding level (<= 1e-12 in tests/integrators).
+// ||R^T R - E||_F stays at rounding level (<= 1e-12 in tests/physics/engine/integrators).
 #pragma once
 
 #include "physics/engine/integrators/rotation_matrix.h"

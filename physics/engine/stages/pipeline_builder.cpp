@@ -1,3 +1,24 @@
+// The step pipeline: this file is the one place that states its order, because it is
+// the code that builds it. World::step() runs the list buildPipeline() returns, in order
+// and nothing else; tst_pipeline pins every lesson's list. A stage in [brackets] is in
+// the list only when the scene needs it (the conditions are in buildPipeline() below).
+//
+// The course's contact model (contact_model "course", the default):
+//   [gravity] -> loads -> [energy_bound] -> integration (one per integrator group with a
+//   movable body) -> finite_check -> [energy_check] -> [box_box] -> [box_plane]
+//   -> [correction] -> [finite_check] -> [probes]
+// The contacts are answered after the integration, one impulse at a time; the second
+// finite_check follows the contact stages whenever there is one.
+//
+// The manifold model (contact_model "manifold", when two bodies or a plane can touch):
+//   [gravity] -> loads -> manifold_contacts -> [energy_bound] -> integration (one per
+//   group) -> finite_check -> [energy_check] -> manifold_positions -> [sleep]
+//   -> finite_check -> [probes]
+// The contacts are solved before the integration and handed to it as loads; the
+// position fix and sleeping follow it.
+//
+// docs/architecture.md ("The step pipeline") describes each stage, its file and its
+// trace ids.
 #include "physics/engine/stages/pipeline_builder.h"
 
 #include "physics/engine/integrator_registry.h"

@@ -1,5 +1,5 @@
 // Builds a world's pipeline from what its scene declares: only the stages the scene
-// needs, in the order of stages/stage.h. World::step() runs the list it returns.
+// needs. World::step() runs the list it returns. The order: stages/pipeline_builder.cpp.
 #pragma once
 
 #include "physics/engine/stages/stage.h"

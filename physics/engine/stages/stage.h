@@ -6,11 +6,8 @@
 // describes (World::pipeline()) is what runs. A stage that finds a blow-up sets the
 // step's status and the step stops there.
 //
-//   gravity -> loads -> [energy_bound] -> integration (one per integrator group)
-//   -> finite_check -> [energy_check] -> [box_box] -> [box_plane] -> [correction]
-//   -> [finite_check] -> [probes]
-//
-// docs/architecture.md has the table of stages, their files and their trace ids.
+// The order: stages/pipeline_builder.cpp. docs/architecture.md has the table of stages,
+// their files and their trace ids.
 #pragma once
 
 #include "physics/engine/body.h"
@@ -25,7 +22,7 @@
 
 namespace rbw {
 
-// The stages a step can run, in pipeline order.
+// The stages a step can run (the order they run in: stages/pipeline_builder.cpp).
 enum class PipelineStage {
     Gravity,       // f_g = M g on every movable body (only with gravity)
     Loads,         // applied forces, couples and one-step forces (drags, pushes): always

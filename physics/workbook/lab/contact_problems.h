@@ -12,7 +12,7 @@
 // And the measure of a state that every model and engine is judged by, taken with the
 // course's own narrow phases (an instrument independent of the model measured):
 //   overlap   the deepest box-box overlap: the SAT overlap of each pair whose AABBs
-//             overlap (collision/box_box_sat.h), the largest of those          [m]
+//             overlap (engine/course/box_box_sat.h), the largest of those      [m]
 //   below     how far the lowest box corner is below a plane                   [m]
 //   KE        sum of 1/2 M |v|^2 + 1/2 omega . L                               [J]
 //   moving    bodies faster than 0.01 m/s                                      [-]

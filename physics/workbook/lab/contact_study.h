@@ -10,7 +10,7 @@
 //             start, max_k (E_k - E_0): contacts that add energy show here          [J]
 //   KE(T)     the kinetic energy at T; moving(T): bodies faster than 0.01 m/s
 //   ns/step   the wall time of the steps alone (the measuring is not timed)        [ns]
-// `rbw contact-study` writes it as CSV (app/core/contact_study_csv.h).
+// `rbw contact-study` writes it as CSV (app/output/study_csv.h).
 #pragma once
 
 #include "physics/workbook/lab/contact_problems.h"

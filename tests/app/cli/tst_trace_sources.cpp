@@ -91,7 +91,7 @@ private slots:
     }
 
     // The collision numbers point into the impulse, the narrow phase and the stages, not
-    // at one place that copies them: lesson 3's J comes from collision/impulse.cpp and its
+    // at one place that copies them: lesson 3's J comes from course/impulse.cpp and its
     // contact point from the SAT.
     void contactNumbersPointWhereComputed()
     {

@@ -75,7 +75,7 @@ void TestStability::freeBody_data()
         QTest::addRow("%s | %s", c, integ) << QString::fromLatin1(c) << QString::fromLatin1(integ) << stays << step
                                            << QString::fromLatin1(kind) << dT << dL << ortho;
     };
-    // Measured with build/tests/stability/rbw_stability_measure (Release, g++ 12).
+    // Measured with build/tests/rbw_stability_measure (Release, g++ 12).
     row("mass 1e-6", "explicit-euler", true, -1, "", 0.138, 0, 2e-15);
     row("mass 1e-6", "symplectic-euler", true, -1, "", 0.138, 0, 2e-15);
     row("mass 1e-6", "midpoint", true, -1, "", 1.69e-06, 0, 2.22e-15);
