@@ -32,3 +32,7 @@ rbw_room(app/gui/panels/accuracy   MAY_INCLUDE physics app/core app/output app/e
 rbw_room(app/gui/panels/check      MAY_INCLUDE physics app/core app/output app/exercise)
 rbw_room(app/gui/panels/editor     MAY_INCLUDE physics/engine app/scene)
 rbw_room(app/gui/shell             MAY_INCLUDE physics app)
+
+# The student's side of the simulator protocol: it stands in for a student's own code,
+# so it uses nothing of the workbook's.
+rbw_room(examples/simulator)
