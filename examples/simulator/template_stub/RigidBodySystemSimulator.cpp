@@ -8,8 +8,7 @@
 #include <cstdio>
 #include <iostream>
 
-#define RBW_REFERENCE_SIMULATOR_NO_MAIN
-#include "../reference_simulator.cpp"
+#include "../reference_simulator.h"
 
 struct RigidBodySystemSimulatorState {
     rbwref::ReferenceSimulator<Real> sim{rbwref::Mistakes{}, Real(0.5), false};

@@ -1,0 +1,143 @@
+#include "app/exercise/exercise_draw.h"
+
+#include "app/exercise/scene_path.h"
+#include "app/exercise/scene_text.h"
+#include "app/exercise/value_grid.h"
+#include "app/scene/scene_loader.h"
+#include "physics/engine/quantity_catalogue.h"
+#include "physics/engine/world.h"
+
+#include <QJsonArray>
+
+#include <algorithm>
+#include <random>
+
+namespace rbw {
+
+namespace {
+
+// Draws every rule's value into a copy of the base scene. Returns the document.
+QJsonObject drawScene(const ExerciseSpec& spec, std::mt19937_64& engine)
+{
+    QJsonValue scene = spec.scene;
+    for (const ExerciseVary& rule : spec.vary) {
+        std::vector<double> values;
+        for (int redraw = 0; redraw < 100; ++redraw) {
+            values.clear();
+            bool allZero = true;
+            for (size_t c = 0; c < rule.lo.size(); ++c) {
+                const std::uint64_t k = uniformIndex(engine, gridCount(rule.lo[c], rule.hi[c], rule.step));
+                values.push_back(gridValue(rule.lo[c], k, rule.step, rule.decimals));
+                allZero = allZero && values.back() == 0.0;
+            }
+            if (!rule.nonzero || !allZero) break;
+        }
+        QJsonValue value;
+        if (rule.vector) {
+            QJsonArray a;
+            for (double x : values) a.append(x);
+            value = a;
+        } else {
+            value = values[0];
+        }
+        for (const QString& path : rule.paths) scene = withSceneValue(scene, *parseScenePath(path), value);
+    }
+    return scene.toObject();
+}
+
+QString nameOf(const SceneDef& scene, int body, int plane)
+{
+    if (body >= 0) return QString::fromStdString(scene.bodies[body].name);
+    if (plane >= 0) return QString::fromStdString(scene.planes[plane].name);
+    return QString();
+}
+
+// Runs the candidate: the answer step's trace, and whether every requirement holds.
+// Returns an empty string when the candidate keeps the lesson's point, else why not.
+QString runCandidate(const ExerciseSpec& spec, const SceneDef& scene, GeneratedExercise& g)
+{
+    World world(scene);
+    std::vector<int> firstPoints(spec.require.size(), -1);
+    bool haveAnswer = false;
+    StepTrace trace;
+    for (long k = 0; k < scene.steps; ++k) {
+        trace.clear();
+        const StepStatus status = world.step(&trace);
+        if (!status.ok) return "the scene blows up in step " + QString::number(k) + ": " + QString::fromStdString(status.message);
+        const bool answerHere = spec.answerAtFirstContact ? !trace.contacts.empty() : k == spec.answerStep;
+        if (answerHere && !haveAnswer) {
+            haveAnswer = true;
+            g.answerStep = k;
+            g.answerTrace = trace;
+        }
+        for (size_t r = 0; r < spec.require.size(); ++r) {
+            if (firstPoints[r] >= 0) continue;
+            int points = 0;
+            for (const ContactHeader& c : trace.contacts) {
+                const QString a = nameOf(scene, c.bodyA, -1);
+                const QString b = nameOf(scene, c.bodyB, c.plane);
+                if ((a == spec.require[r].a && b == spec.require[r].b) || (a == spec.require[r].b && b == spec.require[r].a)) {
+                    points += std::max(1, c.pointCount);
+                }
+            }
+            if (points > 0) firstPoints[r] = points;
+        }
+    }
+    if (!haveAnswer) {
+        return spec.answerAtFirstContact ? "no contact in the scene's " + QString::number(scene.steps) + " steps"
+                                         : "the scene has no step " + QString::number(spec.answerStep);
+    }
+    for (size_t r = 0; r < spec.require.size(); ++r) {
+        const ExerciseRequire& req = spec.require[r];
+        if (firstPoints[r] < 0) {
+            return req.jsonPath + ": no contact between " + req.a + " and " + req.b + " in the scene's " +
+                   QString::number(scene.steps) + " steps";
+        }
+        if (req.points > 0 && firstPoints[r] != req.points) {
+            return req.jsonPath + ": " + req.a + " and " + req.b + " first touch with " + QString::number(firstPoints[r]) +
+                   (firstPoints[r] == 1 ? " contact point" : " contact points") + ", the lesson needs " +
+                   QString::number(req.points);
+        }
+    }
+    return QString();
+}
+
+} // namespace
+
+GeneratedExercise generateExercise(const ExerciseSpec& spec, std::uint64_t seed)
+{
+    GeneratedExercise g;
+    g.seed = seed;
+    QString lastReason;
+    for (int attempt = 0; attempt < spec.attempts; ++attempt) {
+        // Sub-seed a: the seed itself, then the seed xor a multiple of the golden-ratio
+        // constant; all arithmetic modulo 2^64, the same everywhere.
+        const std::uint64_t subSeed = seed ^ (static_cast<std::uint64_t>(attempt) * 0x9E3779B97F4A7C15ULL);
+        std::mt19937_64 engine(subSeed);
+        QJsonObject doc = drawScene(spec, engine);
+        doc.insert("name", spec.scene.value("name").toString(spec.lessonId) + ", seed " + QString::number(seed));
+        if (!spec.description.isEmpty()) doc.insert("description", spec.description);
+        const QByteArray bytes = indentedSceneJson(doc);
+        SceneLoadResult loaded = parseScene(bytes, spec.file);
+        if (!loaded.ok()) {
+            lastReason = "the scene does not load: " + loaded.errors.join("; ");
+            continue;
+        }
+        GeneratedExercise candidate;
+        candidate.seed = seed;
+        lastReason = runCandidate(spec, *loaded.scene, candidate);
+        if (!lastReason.isEmpty()) continue;
+        candidate.sceneJson = bytes;
+        candidate.scene = std::move(loaded.scene);
+        candidate.attempt = attempt;
+        for (const TraceEntry& e : candidate.answerTrace.entries) {
+            if (spec.quantities.contains(QLatin1String(e.info->id))) candidate.key.push_back(e);
+        }
+        return candidate;
+    }
+    g.errors << spec.file + ": vary: no scene out of " + QString::number(spec.attempts) + " sub-seeds of seed " +
+                    QString::number(seed) + " kept the lesson's point; the last: " + lastReason;
+    return g;
+}
+
+} // namespace rbw
