@@ -10,7 +10,7 @@
 //     except for the classes listed below, whose rules relate values to each other
 //     (or are not JSON at all) and so lie beyond a schema;
 //   - the schema's list of integrators is the physics' registry, and its closed objects
-//     hold exactly the keys the loader allows (read from scene_loader.cpp's checkKeys()).
+//     hold exactly the keys the loader allows (read from scene_mapping.cpp's checkKeys()).
 // The validator (tests/support/json_schema.h) is checked first, keyword by keyword,
 // on schemas whose verdicts follow from the JSON Schema specification.
 #include "app/scene/scene_loader.h"
@@ -228,14 +228,14 @@ void TestSceneSchema::integratorsAreTheRegistry()
     QCOMPARE(schemaNames, registry);
 }
 
-// Every list of keys the loader allows (its checkKeys() calls in scene_loader.cpp) is
+// Every list of keys the loader allows (its checkKeys() calls in scene_mapping.cpp) is
 // exactly the keys of one closed object of the schema (additionalProperties false; an
 // orientation's forms together), and every closed object is one of the loader's: a key
 // added to one and not the other fails here.
 void TestSceneSchema::keysAreTheLoaders()
 {
     QList<QSet<QString>> loader;
-    const QString source = QString::fromUtf8(readFile(kSource + QStringLiteral("/app/scene/scene_loader.cpp")));
+    const QString source = QString::fromUtf8(readFile(kSource + QStringLiteral("/app/scene/scene_mapping.cpp")));
     static const QRegularExpression call(QStringLiteral("checkKeys\\(\\w+, [^,{]+, \\{([^}]*)\\}\\)"));
     static const QRegularExpression word(QStringLiteral("\"([a-z_]+)\""));
     for (auto m = call.globalMatch(source); m.hasNext();) {

@@ -76,7 +76,9 @@ private:
     QStringList properties(int group) const;
     QString pathOf(int group, int element, int property) const;
     QString elementTitle(int group, int element) const;
+    // The values (scene_editor_values.cpp): a field as text, read back, its choices.
     QVariant valueOf(int group, int element, const QString& key, int role) const;
+    QStringList optionsOf(int group, const QString& key) const;
     bool setValue(int group, int element, const QString& key, const QVariant& value, QString* error);
     QStringList bodyNames() const;
     void refreshAll();
