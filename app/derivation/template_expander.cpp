@@ -1,5 +1,6 @@
 #include "app/derivation/template_expander.h"
 
+#include "app/derivation/derivation_fallback.h"
 #include "app/derivation/derivation_page.h"
 #include "app/derivation/integrator_sections.h"
 #include "physics/engine/quantities.h"

@@ -1,5 +1,6 @@
 #include "app/derivation/template_expander.h"
 
+#include "app/derivation/derivation_fallback.h"
 #include "app/derivation/derivation_page.h"
 #include "app/output/value_format.h"
 #include "physics/engine/integrator_registry.h"
@@ -216,6 +217,7 @@ QString TemplateExpander::placeholder(const QString& inside, const ExpansionCont
     return inlineMathHtml(latex);
 }
 
+QString TemplateExpander::section(IndexKind kind, const QString& inner, const ExpansionContext& ctx, int line, bool math)
 {
     // {{#force}} x {{/force}}: x once per force, joined by " + " (a sum written out).
     QStringList parts;

@@ -158,6 +158,16 @@ ExerciseLoadResult loadExercise(const QString& lesson)
         }
         if (v.contains("nonzero") && !v.value("nonzero").isBool()) errors << fmt(spec, at + ".nonzero", "must be true or false");
         rule.nonzero = v.value("nonzero").toBool(false);
+        if (rule.nonzero) {
+            // Some component must have a value other than 0 on its grid, else every
+            // draw is all zero and "nonzero" would be broken silently.
+            bool onlyZero = true;
+            for (size_t c = 0; c < rule.lo.size(); ++c) {
+                onlyZero = onlyZero && gridCount(rule.lo[c], rule.hi[c], rule.step) == 0 &&
+                           gridValue(rule.lo[c], 0, rule.step, rule.decimals) == 0.0;
+            }
+            if (onlyZero) errors << fmt(spec, at + ".nonzero", "is true, but the range holds only 0");
+        }
         // Every path must exist in the scene with the range's shape.
         for (const QString& path : rule.paths) {
             const auto tokens = parseScenePath(path);

@@ -4,6 +4,8 @@
 #include <QJsonObject>
 #include <QRegularExpression>
 
+#include <limits>
+
 namespace rbw {
 
 namespace {
@@ -45,7 +47,13 @@ std::optional<std::vector<ScenePathToken>> parseScenePath(const QString& path)
         if (!m.hasMatch()) return std::nullopt;
         tokens.push_back(ScenePathToken{m.captured(1), -1});
         auto it = index.globalMatch(m.captured(2));
-        while (it.hasNext()) tokens.push_back(ScenePathToken{QString(), it.next().captured(1).toInt()});
+        while (it.hasNext()) {
+            // "[4294967296]" must not wrap to 0 (toInt's answer on overflow): an index
+            // that does not fit is beyond every array, so the path is not in the scene.
+            bool fits = false;
+            const qint64 k = it.next().captured(1).toLongLong(&fits);
+            tokens.push_back(ScenePathToken{QString(), fits ? k : std::numeric_limits<qint64>::max()});
+        }
     }
     return tokens;
 }

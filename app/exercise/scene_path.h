@@ -13,8 +13,8 @@
 namespace rbw {
 
 struct ScenePathToken {
-    QString key;     // an object key, or empty for an array index
-    int index = -1;
+    QString key;        // an object key, or empty for an array index
+    qint64 index = -1;  // an index too large for qint64 is qint64's largest: in no array
 };
 
 // The tokens of PATH, or nothing when it is not a scene path.

@@ -23,7 +23,9 @@ int decimalsOf(double step)
 {
     for (int d = 0; d <= 6; ++d) {
         const double scaled = step * std::pow(10.0, d);
-        if (std::abs(scaled - std::round(scaled)) <= 1e-9 * std::max(1.0, scaled)) return d;
+        // A whole number of units of 10^-d, and at least one (else the grid's step
+        // would round to 0 units and every value be lo).
+        if (std::round(scaled) >= 1.0 && std::abs(scaled - std::round(scaled)) <= 1e-9 * std::max(1.0, scaled)) return d;
     }
     return -1;
 }
@@ -40,7 +42,10 @@ double gridValue(double lo, std::uint64_t k, double step, int decimals)
 
 std::uint64_t gridCount(double lo, double hi, double step)
 {
-    return static_cast<std::uint64_t>(std::floor((hi - lo) / step + 1e-9));
+    const double count = std::floor((hi - lo) / step + 1e-9);
+    // 2^64: a double at or above it (or NaN) would make the cast undefined.
+    if (!(count < 18446744073709551616.0)) return std::numeric_limits<std::uint64_t>::max();
+    return static_cast<std::uint64_t>(count);
 }
 
 } // namespace rbw

@@ -21,6 +21,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace {
@@ -86,6 +87,38 @@ private slots:
         std::mt19937_64 e(42);
         for (int i = 0; i < 1000; ++i) QCOMPARE(rbw::uniformIndex(e, 0), std::uint64_t{0});
         for (int i = 0; i < 1000; ++i) QVERIFY(rbw::uniformIndex(e, 8) <= 8);
+    }
+
+    // The grid's decimals, from the step: a whole number of units of 10^-d for the
+    // smallest d <= 6, and at least one unit (issue 22: 5e-324 is 0 units at every d,
+    // not a step of 0 decimals; 1e-7 is 0.1 units at d = 6).
+    void decimalsOfSteps_data()
+    {
+        QTest::addColumn<double>("step");
+        QTest::addColumn<int>("decimals");
+        QTest::newRow("2") << 2.0 << 0;
+        QTest::newRow("0.5") << 0.5 << 1;
+        QTest::newRow("0.25") << 0.25 << 2;
+        QTest::newRow("0.000001") << 0.000001 << 6;
+        QTest::newRow("0.0000001") << 0.0000001 << -1;
+        QTest::newRow("1e-10") << 1e-10 << -1;
+        QTest::newRow("5e-324") << 5e-324 << -1;
+        QTest::newRow("1/3") << 1.0 / 3.0 << -1;
+    }
+    void decimalsOfSteps()
+    {
+        QFETCH(double, step);
+        QFETCH(int, decimals);
+        QCOMPARE(rbw::decimalsOf(step), decimals);
+    }
+
+    // Values on the grid: lo + k step, and k's count saturates instead of overflowing.
+    void gridCounts()
+    {
+        QCOMPARE(rbw::gridCount(1, 5, 0.5), std::uint64_t{8});   // 1, 1.5, ..., 5: 9 values
+        QCOMPARE(rbw::gridValue(1, 8, 0.5, 1), 5.0);
+        QCOMPARE(rbw::gridValue(0.1, 2, 0.1, 1), 0.3);           // 3/10, not 0.30000000000000004
+        QCOMPARE(rbw::gridCount(0, 1e300, 1), std::numeric_limits<std::uint64_t>::max());
     }
 
     void sameSeedSameBytes_data()
@@ -358,6 +391,27 @@ private slots:
         QTest::newRow("vector needs ranges")
             << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "forces[0].force", "range": [1, 2], "step": 0.5 } ], )" + q + "}")
             << "exercise.json: vary[0].path: \"forces[0].force\" is not a number";
+        // issue 22: toInt() wrapped 4294967296 to 0, so body 0's mass varied
+        QTest::newRow("index beyond int")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[4294967296].mass", "range": [1, 2], "step": 0.5 } ], )" + q + "}")
+            << "exercise.json: vary[0].path: \"bodies[4294967296].mass\" is not in scene.json";
+        QTest::newRow("index beyond int64")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[99999999999999999999].mass", "range": [1, 2], "step": 0.5 } ], )" + q + "}")
+            << "exercise.json: vary[0].path: \"bodies[99999999999999999999].mass\" is not in scene.json";
+        // issue 22: 5e-324 passed as a step of 0 decimals (0 units: every value lo)
+        QTest::newRow("step 5e-324")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 2], "step": 5e-324 } ], )" + q + "}")
+            << "exercise.json: vary[0].step: must be a number > 0 with at most 6 decimals";
+        QTest::newRow("step 1e-10")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 1], "step": 1e-10 } ], )" + q + "}")
+            << "exercise.json: vary[0].step: must be a number > 0 with at most 6 decimals";
+        QTest::newRow("range too wide for the step")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 1e300], "step": 1 } ], )" + q + "}")
+            << "exercise.json: vary[0].step: too small for the range: more than a million values";
+        // issue 22: every draw of [0, 0]^3 is zero, which "nonzero" silently let through
+        QTest::newRow("nonzero on an all-zero range")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "forces[0].force", "range": [[0, 0], [0, 0], [0, 0]], "step": 0.5, "nonzero": true } ], )" + q + "}")
+            << "exercise.json: vary[0].nonzero: is true, but the range holds only 0";
         QTest::newRow("step zero")
             << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 2], "step": 0 } ], )" + q + "}")
             << "exercise.json: vary[0].step: must be a number > 0";
@@ -414,6 +468,18 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const double mass = QJsonDocument::fromJson(r.out).object().value("bodies").toArray()[0].toObject().value("mass").toDouble();
         QVERIFY(mass == 1.0 || mass == 1.5 || mass == 2.0);
+
+        // nonzero where only one component can be other than 0: accepted, and drawn so
+        // (the refusal above is about a range holding only 0, not about zeros in it).
+        const QString oneAxis = customLesson("custom-one-axis", "01-one-step",
+                                             R"({ "vary": [ { "path": "forces[0].force", "range": [[0, 0], [0, 0.5], [0, 0]], "step": 0.5, "nonzero": true } ], "quantities": ["force"] })");
+        const rbw::test::RbwRun r2 = rbw::test::runRbw({"exercise", oneAxis, "--seed", "1"});
+        QVERIFY2(r2.exitCode == 0, qPrintable(r2.err));
+        const QJsonArray force = QJsonDocument::fromJson(r2.out).object().value("forces").toArray()[0].toObject().value("force").toArray();
+        QCOMPARE(force.size(), 3);
+        QCOMPARE(force[0].toDouble(), 0.0);
+        QCOMPARE(force[1].toDouble(), 0.5);
+        QCOMPARE(force[2].toDouble(), 0.0);
     }
 
     void unwritableOutput()
