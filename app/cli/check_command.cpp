@@ -149,15 +149,22 @@ int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, 
         for (size_t i = 0; i < f.answers.size(); ++i) {
             const Answer& a = f.answers[i];
             const AnswerResult& r = f.results[i];
-            allCorrect = allCorrect && r.verdict == Verdict::Correct;
+            allCorrect = allCorrect && countsAsCorrect(r.verdict);
             QStringList mistakes;
             for (const char* m : r.mistakes) mistakes << QString::fromLatin1(m);
+            QStringList possible;
+            QJsonArray possibleJson;
+            for (const PossibleMistake& p : r.possibleMistakes) {
+                possible << QStringLiteral("%1 (%2)").arg(QString::fromLatin1(p.id), QString::fromStdString(p.reason));
+                possibleJson.append(QJsonObject{{"id", QString::fromLatin1(p.id)}, {"reason", QString::fromStdString(p.reason)}});
+            }
             if (format == "text") {
-                const char* mark = r.verdict == Verdict::Correct ? "  ok    " : r.verdict == Verdict::Wrong ? "  WRONG " : "  CARRIED ";
+                const char* mark = countsAsCorrect(r.verdict) ? "  ok    " : r.verdict == Verdict::Wrong ? "  WRONG " : "  CARRIED ";
                 out << mark << QString::fromStdString(a.quantity) << " (" << who(a) << "): " << verdictName(r.verdict);
                 if (r.verdict != Verdict::Correct) {
                     out << "\n          expected " << numbers(r.expected) << ", given " << numbers(a.value);
                     if (!mistakes.isEmpty()) out << "\n          mistake: " << mistakes.join(", ");
+                    if (!possible.isEmpty()) out << "\n          possible mistakes: " << possible.join("; ");
                     out << "\n          " << QString::fromStdString(r.explanation);
                 }
                 out << '\n';
@@ -174,6 +181,7 @@ int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, 
                               {"expected", jsonNumbers(r.expected)},
                               {"given", jsonNumbers(a.value)},
                               {"mistakes", QJsonArray::fromStringList(mistakes)},
+                              {"possible_mistakes", possibleJson},
                               {"explanation", QString::fromStdString(r.explanation)}};
                 if (a.contact >= 0) o.insert("contact", a.contact);
                 else o.insert("body", QString::fromStdString(scene.bodies[a.body].name));

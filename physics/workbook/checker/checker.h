@@ -1,18 +1,25 @@
-// Checking a student's numbers for one step (issue 10). The workbook's own numbers are
-// the trace of that step; an answer is
+// Checking a student's numbers for one step (issues 10 and 21). The workbook's own
+// numbers are the trace of that step; an answer is
 //   correct              within the tolerance of the workbook's number, or of the number
 //                        recomputed from the student's own earlier (correct but rounded)
 //                        answers, with their rounding carried into the tolerance;
+//   imprecise            right to 3 significant figures but not within the tolerance:
+//                        precision is not a mistake, and it counts as correct;
 //   follows-from-earlier wrong, but what the student's own earlier wrong answers give
-//                        (error carried forward: a marker's follow-through mark);
+//                        (error carried forward: a marker's follow-through mark), by the
+//                        rules of follow_through.h;
 //   wrong                neither.
-// A wrong answer lists every mistake model (mistakes.h) whose value it matches.
+// A wrong answer names a mistake model (mistakes.h) in `mistakes` only when the
+// student's own answers support it; models that only may explain it are in
+// `possibleMistakes`, each with its reason (diagnosis.h).
 //
-// Tolerances: an answer v matches a reference e when |v_i - e_i| <= tol for every
-// component, tol = rel * max_j |e_j| + (the rounding carried in). The rounding of a
-// student's input u is rel * max_j |u_j| per component; what a recomputation inherits
-// from it is propagated to first order, by perturbing each input component by its
-// rounding and summing the absolute changes.
+// Tolerances (tolerance.h): an answer v matches a reference e when |v_i - e_i| <= tol for
+// every component, tol = rel * max_j |e_j| + (the rounding carried in). The rounding of a
+// student's input u is rel * max_j |u_j| per component (half a unit of its third figure
+// for an imprecise one); what a recomputation inherits from it is propagated to first
+// order, by perturbing each input component by its rounding and summing the changes.
+//
+// A separating contact (v_rel . n > 0) has no impulse: its J is checked against 0.
 #pragma once
 
 #include "physics/workbook/checker/mistakes.h"
@@ -33,13 +40,22 @@ struct Answer {
     std::vector<double> value;   // flattened: 1, 3, 4 ([w, x, y, z]) or 9 (row by row) numbers
 };
 
-enum class Verdict { Correct, Wrong, FollowsFromEarlier };
-const char* verdictName(Verdict v);   // "correct", "wrong", "follows-from-earlier"
+enum class Verdict { Correct, Wrong, FollowsFromEarlier, Imprecise };
+const char* verdictName(Verdict v);   // "correct", "wrong", "follows-from-earlier", "imprecise"
+// Correct and imprecise: the exit status and the marks treat both as right.
+bool countsAsCorrect(Verdict v);
+
+// A mistake that may give the number, and why it is not named with confidence.
+struct PossibleMistake {
+    const char* id;
+    std::string reason;   // "several mistakes give this number", "it fits only through ..."
+};
 
 struct AnswerResult {
     Verdict verdict = Verdict::Wrong;
     std::vector<double> expected;         // the workbook's number (flattened)
-    std::vector<const char*> mistakes;    // ids of the mistake models the answer matches
+    std::vector<const char*> mistakes;    // mistakes the student's answers support (confident)
+    std::vector<PossibleMistake> possibleMistakes;
     std::string explanation;              // one or two sentences for the student
 };
 

@@ -4,6 +4,7 @@
 #include "physics/engine/quantities.h"
 
 #include <cmath>
+#include <utility>
 
 namespace rbw {
 
@@ -40,6 +41,19 @@ const std::vector<MistakeInfo>& mistakeCatalogue()
          "The denominator lacks the rotational terms [(I^-1 (x x n)) x x] . n of both bodies."},
         {Mistake::ImpulseWithoutOnePlus, "impulse-without-one-plus", "J = -c v_rel.n / (...)",
          "The numerator is -(1 + c) v_rel.n: the impulse first stops the approach, then c of it bounces back."},
+        {Mistake::PointVelocityCrossReversed, "point-velocity-cross-reversed", "v_p = v + (p - x) x omega",
+         "The cross product of the point velocity is the wrong way round: v_p = v + omega x (p - x)."},
+        {Mistake::PointVelocityLeverArmFromOrigin, "point-velocity-lever-arm-from-origin", "v_p = v + omega x p",
+         "The point's lever arm was taken from the world origin; it starts at the centre of mass: "
+         "v_p = v + omega x (p - x)."},
+        {Mistake::RestitutionOneMinus, "restitution-one-minus", "J = -(1 - c) v_rel.n / (...)",
+         "The numerator is -(1 + c) v_rel.n, not -(1 - c) v_rel.n: the bounce adds c of the approach."},
+        {Mistake::InertiaAxesSwapped, "inertia-axes-swapped", "I0 with two of its moments exchanged",
+         "Two of the box's axes were read in another order: I0 = M/12 diag(b^2 + c^2, a^2 + c^2, a^2 + b^2) "
+         "with a, b, c its extents along the body's x, y and z.",
+         3},
+        {Mistake::QuaternionWithoutHalfAngle, "quaternion-without-half-angle", "r0 = (cos th, n sin th)",
+         "A rotation by th about n is the quaternion (cos th/2, n sin th/2); the half angle was left out."},
     };
     return all;
 }
@@ -56,10 +70,25 @@ namespace {
 
 // --- the mistakes, one small function each ---
 
-// I0 = M/12 diag(b^2 + c^2, a^2 + c^2, a^2 + b^2); half-extents-for-size puts a/2, b/2, c/2 in.
-Mat3 bodyInertia(const Vec3& size, double M, Mistake m)
+// I0 = M/12 diag(b^2 + c^2, a^2 + c^2, a^2 + b^2); half-extents-for-size puts a/2, b/2, c/2 in;
+// inertia-axes-swapped exchanges two moments (variant 0: x and y, 1: y and z, 2: x and z)
+Mat3 bodyInertia(const Vec3& size, double M, Mistake m, int variant)
 {
-    return boxInertiaBody(m == Mistake::HalfExtentsForSize ? Vec3(0.5 * size) : size, M);
+    Mat3 I0 = boxInertiaBody(m == Mistake::HalfExtentsForSize ? Vec3(0.5 * size) : size, M);
+    if (m == Mistake::InertiaAxesSwapped) {
+        static const int pairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
+        const int i = pairs[variant % 3][0], j = pairs[variant % 3][1];
+        std::swap(I0(i, i), I0(j, j));
+    }
+    return I0;
+}
+
+// The orientation at the start; quaternion-without-half-angle builds the initial one as
+// (cos th, n sin th) for (cos th/2, n sin th/2): the angle doubled, r0^2
+Quat startOrientation(const Quat& r0, bool firstStep, Mistake m)
+{
+    if (m != Mistake::QuaternionWithoutHalfAngle || !firstStep) return r0;
+    return (r0 * r0).normalized();
 }
 
 // q_i = (p_i - x) x f_i;  torque-reversed: f_i x (p_i - x);  lever-arm-from-origin: p_i x f_i
@@ -106,33 +135,39 @@ Vec3 angularVelocity(const Mat3& Iinv_W, const Mat3& R, const Mat3& I0, const Ma
     return Iinv_W * L;
 }
 
-// v_p = v + omega x (p - x);  point-velocity-without-rotation: v
+// v_p = v + omega x (p - x);  point-velocity-without-rotation: v;
+// point-velocity-cross-reversed: v + (p - x) x omega;  point-velocity-lever-arm-from-origin: v + omega x p
 Vec3 pointVelocityOf(const Vec3& v, const Vec3& omega, const Vec3& p, const Vec3& x, Mistake m)
 {
     if (m == Mistake::PointVelocityWithoutRotation) return v;
+    if (m == Mistake::PointVelocityCrossReversed) return v + (p - x).cross(omega);
+    if (m == Mistake::PointVelocityLeverArmFromOrigin) return v + omega.cross(p);
     return v + omega.cross(p - x);
 }
 
 } // namespace
 
-HandEulerStep handEulerStep(const BodyStepInputs& in, Mistake m)
+HandEulerStep handEulerStep(const BodyStepInputs& in, Mistake m, int variant)
 {
     HandEulerStep s;
     const double M = in.mass;
-    s.I0_B = bodyInertia(in.size, M, m);
+    s.I0_B = bodyInertia(in.size, M, m, variant);
     s.I0inv_B = Mat3::Zero();
     for (int i = 0; i < 3; ++i) s.I0inv_B(i, i) = 1.0 / s.I0_B(i, i);
 
     // The start of the step: R, I^-1 and omega of r_n and L_n (these carry no mistake of
-    // this step: the student checks one step from the workbook's state).
-    const Mat3 R0 = in.q_WB.toRotationMatrix();
+    // this step: the student checks one step from the workbook's state), except the
+    // mistakes made in setting the body up (its I0 or initial orientation).
+    const bool setUp = m == Mistake::InertiaAxesSwapped || m == Mistake::QuaternionWithoutHalfAngle;
+    const Quat r0 = startOrientation(in.q_WB, in.firstStep, m);
+    const Mat3 R0 = r0.toRotationMatrix();
     const Mat3 I0inv_true = [&] {
         const Mat3 I0 = boxInertiaBody(in.size, M);
         Mat3 inv = Mat3::Zero();
         for (int i = 0; i < 3; ++i) inv(i, i) = 1.0 / I0(i, i);
         return inv;
     }();
-    const Mat3 Iinv0 = inverseInertiaWorld(R0, I0inv_true, in.convention);
+    const Mat3 Iinv0 = inverseInertiaWorld(R0, setUp ? s.I0inv_B : I0inv_true, in.convention);
     const Vec3 omega0 = Iinv0 * in.L_W;
 
     // Step 1: F = sum f_i + M g,  q = sum (p_i - x) x f_i + sum q_j
@@ -152,7 +187,7 @@ HandEulerStep handEulerStep(const BodyStepInputs& in, Mistake m)
     // Step 4: r <- r + h/2 (0, omega_n) r, normalised
     const Vec3 omegaUsed =
         m == Mistake::OmegaBeforeOrientation ? Vec3(Iinv0 * s.L_W) : omega0;   // new omega: I^-1(r_n) L_{n+1}
-    s.q_WB = turned(in.q_WB, omegaUsed, in.h, m);
+    s.q_WB = turned(r0, omegaUsed, in.h, m);
     // Steps 6-7: R = R(r), I^-1 = R I0^-1 R^T, omega = I^-1 L
     s.R_WB = s.q_WB.toRotationMatrix();
     s.Iinv_W = worldInverseInertia(s.R_WB, s.I0inv_B, in.convention, m);
@@ -174,6 +209,7 @@ bool HandEulerStep::value(std::string_view id, int index, TraceValue& out) const
         {&q::position, x_W},            {&q::linear_velocity, v_W},
         {&q::orientation, q_WB},        {&q::angular_momentum, L_W},
         {&q::rotation_matrix, R_WB},    {&q::inverse_inertia_world, Iinv_W},
+        {&q::inverse_inertia_world_template, Iinv_W},   // a template-convention body's row
         {&q::angular_velocity, omega_W},
     };
     for (const auto& [info, v] : rows) {
@@ -209,8 +245,10 @@ HandImpulse handImpulse(const ContactInputs& in, Mistake m)
     r.v_rel = m == Mistake::RelativeVelocityReversed ? Vec3(r.velocity_b - r.velocity_a)
                                                      : Vec3(r.velocity_a - r.velocity_b);
     r.v_rel_n = r.v_rel.dot(n);
-    // numerator -(1 + c) v_rel.n;  impulse-without-one-plus: -c v_rel.n
-    const double bounce = m == Mistake::ImpulseWithoutOnePlus ? in.restitution : 1.0 + in.restitution;
+    // numerator -(1 + c) v_rel.n;  impulse-without-one-plus: -c v_rel.n;  restitution-one-minus: -(1 - c) v_rel.n
+    const double bounce = m == Mistake::ImpulseWithoutOnePlus ? in.restitution
+                          : m == Mistake::RestitutionOneMinus ? 1.0 - in.restitution
+                                                              : 1.0 + in.restitution;
     r.numerator = -bounce * r.v_rel_n;
     // 1/M_A + 1/M_B + [(I_A^-1 (x_a x n)) x x_a] . n + [...]_B;  impulse-linear-only: 1/M_A + 1/M_B
     r.denominator = in.invM_A + in.invM_B;

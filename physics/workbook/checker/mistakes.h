@@ -39,6 +39,12 @@ enum class Mistake {
     RelativeVelocityReversed,     // v_rel = v_B - v_A
     ImpulseLinearOnly,            // J = -(1 + c) v_rel.n / (1/M_A + 1/M_B)
     ImpulseWithoutOnePlus,        // J = -c v_rel.n / (...)
+    // Learned from students' code (issue 21 item 1)
+    PointVelocityCrossReversed,   // v_p = v + (p - x) x omega
+    PointVelocityLeverArmFromOrigin, // v_p = v + omega x p
+    RestitutionOneMinus,          // numerator -(1 - c) v_rel.n
+    InertiaAxesSwapped,           // two of I0's moments exchanged (variant 0: x-y, 1: y-z, 2: x-z)
+    QuaternionWithoutHalfAngle,   // initial r = (cos th, n sin th) = r0^2 (step 0)
 };
 
 struct MistakeInfo {
@@ -46,6 +52,7 @@ struct MistakeInfo {
     const char* id;            // stable, e.g. "transposed-inertia"
     const char* equation;      // the wrong equation, plain text
     const char* explanation;   // one sentence: what went wrong and the right equation
+    int variants = 1;          // ways the mistake can be made (which two axes are swapped)
 };
 
 // Every model, in the order of the enum (without None).
@@ -66,6 +73,7 @@ struct BodyStepInputs {
     Vec3 g_W = Vec3::Zero();                     // gravity, F += M g
     std::vector<Vec3> probes_B;                  // points fixed to the body, body frame
     InertiaConvention convention = InertiaConvention::Standard;
+    bool firstStep = true;                       // r is the scene's initial orientation
 };
 
 // The quantities of one hand-calculated explicit Euler step (trace ids in comments).
@@ -83,8 +91,9 @@ struct HandEulerStep {
     bool value(std::string_view id, int index, TraceValue& out) const;
 };
 
-// The explicit Euler step of the TUM algorithm by hand, with `m` (None: correct).
-HandEulerStep handEulerStep(const BodyStepInputs& in, Mistake m = Mistake::None);
+// The explicit Euler step of the TUM algorithm by hand, with `m` (None: correct) in its
+// `variant` (0 .. MistakeInfo::variants - 1).
+HandEulerStep handEulerStep(const BodyStepInputs& in, Mistake m = Mistake::None, int variant = 0);
 
 // One contact impulse at its start: the two sides (B may be a plane: invM = 0, Iinv = 0).
 struct ContactInputs {

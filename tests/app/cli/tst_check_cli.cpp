@@ -56,7 +56,9 @@ private slots:
         QCOMPARE(x.value("expected").toArray(), (QJsonArray{0, 0, 0}));
         QCOMPARE(x.value("given").toArray(), (QJsonArray{2, 2, 0}));
         QVERIFY(x.value("mistakes").toArray().contains(QStringLiteral("velocity-before-position")));
-        QVERIFY(results[1].toObject().value("mistakes").toArray().contains(QStringLiteral("body-inverse-inertia")));
+        // omega alone: several mistakes give it (issue 21), so it is only possible.
+        QVERIFY(results[1].toObject().value("possible_mistakes").toArray().contains(
+            QJsonObject{{"id", "body-inverse-inertia"}, {"reason", "several mistakes give this number"}}));
     }
 
     // --step overrides the file's step. In step 1 of lesson 1 no force acts: L stays

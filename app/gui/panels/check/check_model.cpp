@@ -151,7 +151,8 @@ void CheckModel::recheck()
         Row& r = rows_[static_cast<size_t>(rowOfAnswer[k])];
         r.result = results[k];
         switch (results[k].verdict) {
-        case Verdict::Correct: r.state = RowState::Correct; break;
+        case Verdict::Correct:
+        case Verdict::Imprecise: r.state = RowState::Correct; break;
         case Verdict::Wrong: r.state = RowState::Wrong; break;
         case Verdict::FollowsFromEarlier: r.state = RowState::FollowsFromEarlier; break;
         }
@@ -179,6 +180,7 @@ QVariant CheckModel::data(const QModelIndex& index, int role) const
     case MistakesRole: {
         QStringList ids;
         for (const char* id : r.result.mistakes) ids << QString::fromUtf8(id);
+        for (const PossibleMistake& p : r.result.possibleMistakes) ids << QString::fromUtf8(p.id);
         return ids;
     }
     default: break;
@@ -309,7 +311,9 @@ QString CheckModel::explanationHtml(int row) const
     case RowState::Unreadable:
         return tr("%1: your entry cannot be read: %2.").arg(what, r.parsed.error.toHtmlEscaped());
     case RowState::Correct:
-        return tr("%1 is right (✓).").arg(what);
+        return r.result.verdict == Verdict::Imprecise
+                   ? tr("%1 is right (✓). %2").arg(what, QString::fromStdString(r.result.explanation).toHtmlEscaped())
+                   : tr("%1 is right (✓).").arg(what);
     default: break;
     }
     QString html = tr("%1 is %2 (%3).").arg(what, verdictWords(r.state), r.state == RowState::Wrong ? QStringLiteral("✗") : QStringLiteral("↪"));
@@ -326,6 +330,15 @@ QString CheckModel::explanationHtml(int row) const
                         .arg(QString::fromUtf8(id).toHtmlEscaped(),
                              m ? QString::fromUtf8(m->equation).toHtmlEscaped() : QString(),
                              why.isEmpty() ? QString() : QStringLiteral("<br>") + why.toHtmlEscaped());
+        }
+        html += QStringLiteral("</ul>");
+    } else if (!r.result.possibleMistakes.empty()) {
+        html += QStringLiteral("<p>%1</p><ul>").arg(tr("It may be:"));
+        for (const PossibleMistake& p : r.result.possibleMistakes) {
+            const MistakeInfo* m = findMistake(p.id);
+            html += QStringLiteral("<li><code>%1</code>: <i>%2</i> (%3)</li>")
+                        .arg(QString::fromUtf8(p.id).toHtmlEscaped(), m ? QString::fromUtf8(m->equation).toHtmlEscaped() : QString(),
+                             QString::fromStdString(p.reason).toHtmlEscaped());
         }
         html += QStringLiteral("</ul>");
     } else if (r.state == RowState::Wrong) {

@@ -4,60 +4,22 @@
 // "standard" box (Table 2.1's box at 30 deg about z, f = (100, 100, 0) at lever arm
 // (0.3, 0.5, 0.25), h = 0.01): q = (-25, 25, -20), L' = h q = (-0.25, 0.25, -0.2),
 // omega0 = 0 so R stays Rz(30).
-#include "tests/test_support.h"
-
-#include "physics/workbook/checker/checker.h"
-#include "physics/engine/quantities.h"
-#include "physics/engine/world.h"
+#include "tests/physics/workbook/checker/checker_fixture.h"
 
 #include <QtTest>
 
 using rbw::Answer;
 using rbw::Verdict;
 using rbw::Vec3;
+using rbw::test::answer;
+using rbw::test::has;
+using rbw::test::mayBe;
+using rbw::test::StepUnderTest;
+using rbw::test::stepOf;
 
 namespace {
 
-// The world at the start of step k of a lesson and the trace of that step.
-struct StepUnderTest {
-    std::unique_ptr<rbw::World> before;
-    rbw::StepTrace trace;
-};
-
-StepUnderTest stepOf(const char* lesson, int k)
-{
-    StepUnderTest s;
-    s.before = std::make_unique<rbw::World>(rbw::test::lessonScene(QString::fromLatin1(lesson)));
-    for (int i = 0; i < k; ++i) {
-        if (!s.before->step().ok) qFatal("blew up");
-    }
-    const rbw::WorldSnapshot snap = s.before->snapshot();
-    if (!s.before->step(&s.trace).ok) qFatal("blew up");
-    s.before->restore(snap);
-    return s;
-}
-
-Answer answer(const char* id, int body, std::vector<double> v, int contact = -1, int index = -1)
-{
-    Answer a;
-    a.quantity = id;
-    a.body = body;
-    a.contact = contact;
-    a.index = index;
-    a.value = std::move(v);
-    return a;
-}
-
-bool has(const rbw::AnswerResult& r, const char* mistake)
-{
-    return std::any_of(r.mistakes.begin(), r.mistakes.end(), [&](const char* m) { return std::strcmp(m, mistake) == 0; });
-}
-
-std::vector<double> flat(const rbw::TraceValue& v)
-{
-    const QList<double> l = rbw::test::flatten(v);
-    return std::vector<double>(l.begin(), l.end());
-}
+std::vector<double> flat(const rbw::TraceValue& v) { return rbw::test::flatValue(v); }
 
 } // namespace
 
@@ -97,12 +59,12 @@ private slots:
         // L = L + q (no h) = (-0.25, 0.25, -0.2)
         QTest::newRow("L without h") << "angular_momentum" << -1 << std::vector<double>{-0.25, 0.25, -0.2}
                                      << "missing-time-step";
-        // omega = I0^-1 L' = (-4.918, 2.4, -1.765)
-        QTest::newRow("omega in the body frame") << "angular_velocity" << -1 << std::vector<double>{-4.918, 2.4, -1.765}
-                                                 << "body-inverse-inertia";
         // v_p = v = (1, 1, 0)
         QTest::newRow("v_p without rotation") << "point_velocity" << 1 << std::vector<double>{1, 1, 0}
                                               << "point-velocity-without-rotation";
+        // v_p = v + (p - x) x omega' = (-1.111861, 0.929412, 2.675410) (tst_mistakes): the
+        // reversed torque gives it too, through a torque and an L the student did not write,
+        // so alone it is only possible (tst_diagnosis names it with the right q and omega).
     }
 
     void wrongAnswersNameTheirMistake()
@@ -117,6 +79,7 @@ private slots:
         const rbw::AnswerResult r = rbw::checkAnswers(*s.before, s.trace, {a}).front();
         QCOMPARE(r.verdict, Verdict::Wrong);
         QVERIFY2(has(r, qPrintable(mistake)), qPrintable(QString::number(r.mistakes.size())));
+        QVERIFY(r.possibleMistakes.empty());
     }
 
     // Lesson 8: omega made with R^T I0^-1 R shows transposed-inertia; an omega consistent
@@ -136,9 +99,11 @@ private slots:
         const Answer wrongIinv = answer("inverse_inertia_world", 0, flat(iv));
         const Answer wrongOmega = answer("angular_velocity", 0, {omegaT.x(), omegaT.y(), omegaT.z()});
 
+        // Alone it fits only through an I^-1 the student did not write: possible, not named.
         const rbw::AnswerResult alone = rbw::checkAnswers(*s.before, s.trace, {wrongOmega}).front();
         QCOMPARE(alone.verdict, Verdict::Wrong);
-        QVERIFY(has(alone, "transposed-inertia"));
+        QVERIFY(!has(alone, "transposed-inertia"));
+        QVERIFY(mayBe(alone, "transposed-inertia"));
 
         const std::vector<rbw::AnswerResult> chain = rbw::checkAnswers(*s.before, s.trace, {wrongIinv, wrongOmega});
         QCOMPARE(chain[0].verdict, Verdict::Wrong);
@@ -164,13 +129,24 @@ private slots:
         QVERIFY(has(r[0], "relative-velocity-reversed"));
         QCOMPARE(r[1].verdict, Verdict::FollowsFromEarlier);
 
+        // J alone: each model changes a numerator or denominator the student did not write,
+        // so it is possible; with those written (and right where the model keeps them) it is named.
         const rbw::AnswerResult linear =
             rbw::checkAnswers(*s.before, s.trace, {answer("impulse", -1, {8.0 / 3.0}, 0)}).front();
         QCOMPARE(linear.verdict, Verdict::Wrong);
-        QVERIFY(has(linear, "impulse-linear-only"));
+        QVERIFY(mayBe(linear, "impulse-linear-only"));
         const rbw::AnswerResult onePlus =
             rbw::checkAnswers(*s.before, s.trace, {answer("impulse", -1, {32.0 / 27.0}, 0)}).front();
-        QVERIFY(has(onePlus, "impulse-without-one-plus"));
+        QVERIFY(mayBe(onePlus, "impulse-without-one-plus"));
+        // numerator 4 (right), denominator 1.5 = 1/M_A + 1/M_B (linear only), J = 8/3: the
+        // denominator is red and named; J follows from it.
+        const std::vector<rbw::AnswerResult> written = rbw::checkAnswers(
+            *s.before, s.trace,
+            {answer("numerator", -1, {4.0}, 0), answer("denominator", -1, {1.5}, 0), answer("impulse", -1, {8.0 / 3.0}, 0)});
+        QCOMPARE(written[0].verdict, Verdict::Correct);
+        QCOMPARE(written[1].verdict, Verdict::Wrong);
+        QVERIFY(has(written[1], "impulse-linear-only"));
+        QCOMPARE(written[2].verdict, Verdict::FollowsFromEarlier);
         const rbw::AnswerResult right =
             rbw::checkAnswers(*s.before, s.trace, {answer("impulse", -1, {2.370}, 0)}).front();
         QCOMPARE(right.verdict, Verdict::Correct);
@@ -208,6 +184,77 @@ private slots:
             verdicts({answer("velocity_a", -1, {10.5, 0, 0}, 0), vB, answer("relative_velocity", -1, {0.5, 0, 0}, 0)});
         QCOMPARE(carried[0].verdict, Verdict::Wrong);
         QCOMPARE(carried[2].verdict, Verdict::FollowsFromEarlier);
+    }
+
+    // Precision is not a mistake (issue 21 item 4). Right to 3 significant figures is
+    // half a unit of the third figure of the largest component: I0 = diag(0.1016667,
+    // 0.2083333, 0.2266667) as diag(0.102, 0.208, 0.227) is 0.00033 off per entry, within
+    // 0.0005 but not the 4-figure tolerance 0.001 * 0.2266667 = 0.00023; the docs'
+    // v_p = (3.11, 1.07, -2.68) for (3.111861, 1.070588, -2.675410) is at most 0.0046 off,
+    // within 0.005 but not 0.001 * 3.111861 = 0.0031. Wrong in the third figure: 0.103 is
+    // 0.0013 off, (3.12, ...) 0.0081 off: wrong.
+    void imprecise_data()
+    {
+        QTest::addColumn<QString>("id");
+        QTest::addColumn<int>("index");
+        QTest::addColumn<std::vector<double>>("value");
+        QTest::addColumn<int>("verdict");
+        QTest::newRow("I0 to 3 figures") << "inertia_body" << -1
+                                         << std::vector<double>{0.102, 0, 0, 0, 0.208, 0, 0, 0, 0.227}
+                                         << int(Verdict::Imprecise);
+        QTest::newRow("v_p to 3 figures") << "point_velocity" << 1 << std::vector<double>{3.11, 1.07, -2.68}
+                                          << int(Verdict::Imprecise);
+        QTest::newRow("I0 wrong in the 3rd figure") << "inertia_body" << -1
+                                                    << std::vector<double>{0.103, 0, 0, 0, 0.208, 0, 0, 0, 0.227}
+                                                    << int(Verdict::Wrong);
+        QTest::newRow("v_p wrong in the 3rd figure") << "point_velocity" << 1 << std::vector<double>{3.12, 1.07, -2.68}
+                                                     << int(Verdict::Wrong);
+        QTest::newRow("v_p to 4 figures") << "point_velocity" << 1 << std::vector<double>{3.112, 1.071, -2.675}
+                                          << int(Verdict::Correct);
+    }
+
+    void imprecise()
+    {
+        QFETCH(QString, id);
+        QFETCH(int, index);
+        QFETCH(std::vector<double>, value);
+        QFETCH(int, verdict);
+        StepUnderTest s = stepOf("01-one-step/scene.json", 0);
+        const rbw::AnswerResult r = rbw::checkAnswers(*s.before, s.trace, {answer(qPrintable(id), 0, value, -1, index)}).front();
+        QCOMPARE(int(r.verdict), verdict);
+        QCOMPARE(rbw::countsAsCorrect(r.verdict), verdict != int(Verdict::Wrong));
+        if (r.verdict == Verdict::Imprecise) {
+            QCOMPARE(QString::fromStdString(r.explanation),
+                     QStringLiteral("Right to 3 significant figures; write 4 for the check."));
+            QVERIFY(r.mistakes.empty() && r.possibleMistakes.empty());
+        }
+    }
+
+    // A separating contact (v_rel . n = +2 > 0) gets no impulse: the trace records none,
+    // and J = 0 is the right answer (not bad input); J = 1 is wrong.
+    void separatingContactHasNoImpulse()
+    {
+        StepUnderTest s = stepOf("03-two-box-collision/scene.json", 2);
+        rbw::StepTrace t;
+        t.step = 2;
+        t.contacts.push_back(rbw::ContactHeader{0, 1, -1, "vertex-face", "single-point", 1, true, {}});
+        t.add(rbw::q::contact_normal, 0, Vec3(1, 0, 0), 0);
+        t.add(rbw::q::relative_velocity, 0, Vec3(2, 0, 0), 0);
+        t.add(rbw::q::normal_velocity, 0, 2.0, 0);
+        const Answer zero = answer("impulse", -1, {0.0}, 0);
+        QVERIFY2(rbw::answerProblem(t, zero).empty(), rbw::answerProblem(t, zero).c_str());
+        QCOMPARE(rbw::checkAnswers(*s.before, t, {zero}).front().verdict, Verdict::Correct);
+        QCOMPARE(rbw::checkAnswers(*s.before, t, {answer("impulse", -1, {1.0}, 0)}).front().verdict, Verdict::Wrong);
+        // Negative control: an approaching contact without its J recorded stays bad input.
+        t.contacts.front().separating = false;
+        QVERIFY(!rbw::answerProblem(t, zero).empty());
+
+        // Lesson 6, step 33: the edge box's corner leaves the ground (contact 0 separating,
+        // as rbw run --trace all shows): J = 0 is right.
+        StepUnderTest edge = stepOf("06-box-on-plane/scene.json", 33);
+        QVERIFY(!edge.trace.contacts.empty() && edge.trace.contacts.front().separating);
+        QVERIFY(rbw::answerProblem(edge.trace, zero).empty());
+        QCOMPARE(rbw::checkAnswers(*edge.before, edge.trace, {zero}).front().verdict, Verdict::Correct);
     }
 
     void problems_data()

@@ -138,6 +138,77 @@ private slots:
         //   r + that = (1.954942, 1.780518, 5.174631, -0.540729), |.| = 5.836200
         QTest::newRow("omega-before-orientation") << Mistake::OmegaBeforeOrientation << "orientation" << -1
                                                   << QList<double>{0.3349683, 0.3050817, 0.8866438, -0.0926508};
+        // Probe 1 at p = R p_B = (0.3, 0.5, 0.25) (x' = 0): omega' x p = (2.111861, 0.070588, -2.675410),
+        // so the right v_p = v + omega' x p = (3.111861, 1.070588, -2.675410) and the reversed
+        // v + p x omega' = v - omega' x p = (1 - 2.111861, 1 - 0.070588, 0 + 2.675410).
+        QTest::newRow("point-velocity-cross-reversed") << Mistake::PointVelocityCrossReversed << "point_velocity" << 1
+                                                       << QList<double>{-1.111861, 0.929412, 2.675410};
+        // Without the half angle the initial r = 90 deg about z becomes 180 deg: r0^2 =
+        // (1/2 - 1/2, 0, 0, 2 * 1/2) = (0, 0, 0, 1), which stays (omega0 = 0).
+        QTest::newRow("quaternion-without-half-angle r") << Mistake::QuaternionWithoutHalfAngle << "orientation" << -1
+                                                         << QList<double>{0, 0, 0, 1};
+        // R = diag(-1, -1, 1) leaves the diagonal I0^-1 as it is: omega' = I0^-1 L' =
+        // (9.836066 * -0.5, 4.8 * 0.5, 4.411765 * -0.4), the same number as body-inverse-inertia.
+        QTest::newRow("quaternion-without-half-angle omega") << Mistake::QuaternionWithoutHalfAngle << "angular_velocity"
+                                                             << -1 << QList<double>{-4.918033, 2.4, -1.764706};
+        // I0 = diag(0.1016667, 0.2083333, 0.2266667) with x and y exchanged (variant 0).
+        QTest::newRow("inertia-axes-swapped I0") << Mistake::InertiaAxesSwapped << "inertia_body" << -1
+                                                 << QList<double>{0.2083333, 0, 0, 0, 0.1016667, 0, 0, 0, 0.2266667};
+        // I0^-1 = diag(4.8, 9.836066, 4.411765), Rz(90) exchanges x and y again: I^-1 =
+        // diag(9.836066, 4.8, 4.411765) = I0^-1 of the right I0, so omega' = I0^-1 L' again.
+        QTest::newRow("inertia-axes-swapped omega") << Mistake::InertiaAxesSwapped << "angular_velocity" << -1
+                                                    << QList<double>{-4.918033, 2.4, -1.764706};
+    }
+
+    // inertia-axes-swapped has three variants: the pair of axes exchanged.
+    void inertiaAxesSwappedVariants_data()
+    {
+        QTest::addColumn<int>("variant");
+        QTest::addColumn<QList<double>>("diagonal");
+        // diag(0.1016667, 0.2083333, 0.2266667) with two entries exchanged
+        QTest::newRow("x-y") << 0 << QList<double>{0.2083333, 0.1016667, 0.2266667};
+        QTest::newRow("y-z") << 1 << QList<double>{0.1016667, 0.2266667, 0.2083333};
+        QTest::newRow("x-z") << 2 << QList<double>{0.2266667, 0.2083333, 0.1016667};
+    }
+
+    void inertiaAxesSwappedVariants()
+    {
+        QFETCH(int, variant);
+        QFETCH(QList<double>, diagonal);
+        const rbw::Mat3 I0 = rbw::handEulerStep(table21(), Mistake::InertiaAxesSwapped, variant).I0_B;
+        const QString m = rbw::test::mismatch({I0(0, 0), I0(1, 1), I0(2, 2)}, diagonal, 1e-6);
+        QVERIFY2(m.isEmpty(), qPrintable(m));
+    }
+
+    // The point's lever arm from the origin shows when x' != 0: x = (1, 0, 0), v = 0, the
+    // force at p = (1.3, 0.5, 0.25) (the same lever arm, so the same q, L', omega'); x' = x,
+    // probe 1 at p = (1.3, 0.5, 0.25). Right: (3.111861, 1.070588, -2.675410) as above;
+    // wrong v + omega' x p adds omega' x x = (0, omega_z, -omega_y) = (0, -1.764706, -4.918033).
+    void pointVelocityLeverArmFromOrigin()
+    {
+        rbw::BodyStepInputs in = table21();
+        in.x_W = Vec3(1, 0, 0);
+        in.forces = {{Vec3(1.3, 0.5, 0.25), Vec3(1, 1, 0)}};
+        const QString wrong = rbw::test::mismatch(
+            handValue(rbw::handEulerStep(in, Mistake::PointVelocityLeverArmFromOrigin), "point_velocity", 1),
+            {3.111861, -0.694118, -7.593443}, 2e-6);
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong));
+        // Negative control: the right step's v_p.
+        const QString right = rbw::test::mismatch(handValue(rbw::handEulerStep(in), "point_velocity", 1),
+                                                  {3.111861, 1.070588, -2.675410}, 2e-6);
+        QVERIFY2(right.isEmpty(), qPrintable(right));
+    }
+
+    // The set-up mistakes of quaternion-without-half-angle belong to the initial
+    // orientation: at a later step (firstStep false) the model is the right step.
+    void quaternionWithoutHalfAngleOnlyAtTheStart()
+    {
+        rbw::BodyStepInputs in = table21();
+        in.firstStep = false;
+        const QString m = rbw::test::mismatch(
+            handValue(rbw::handEulerStep(in, Mistake::QuaternionWithoutHalfAngle), "orientation"),
+            {std::sqrt(0.5), 0, 0, std::sqrt(0.5)}, 1e-12);
+        QVERIFY2(m.isEmpty(), qPrintable(m));
     }
 
     void eulerMistake()
@@ -232,6 +303,22 @@ private slots:
         // J = -1 * (-2) / (27/16) = 32/27
         QTest::newRow("impulse-without-one-plus") << Mistake::ImpulseWithoutOnePlus << "impulse"
                                                   << QList<double>{32.0 / 27.0};
+        // numerator -(1 - c) v_rel.n = -(1 - 1)(-2) = 0 at c = 1: J = 0
+        QTest::newRow("restitution-one-minus") << Mistake::RestitutionOneMinus << "impulse" << QList<double>{0.0};
+    }
+
+    // At c = 0.5, 1 - c = c: restitution-one-minus and impulse-without-one-plus give one
+    // number, -0.5 (-2) / (27/16) = 16/27, the right one -1.5 (-2) / (27/16) = 16/9.
+    void oneMinusAtHalf()
+    {
+        rbw::ContactInputs in = lesson3();
+        in.restitution = 0.5;
+        for (Mistake m : {Mistake::RestitutionOneMinus, Mistake::ImpulseWithoutOnePlus}) {
+            const QString s = rbw::test::mismatch(impulseValue(rbw::handImpulse(in, m), "impulse"), {16.0 / 27.0}, 1e-12);
+            QVERIFY2(s.isEmpty(), qPrintable(s));
+        }
+        const QString right = rbw::test::mismatch(impulseValue(rbw::handImpulse(in), "impulse"), {16.0 / 9.0}, 1e-12);
+        QVERIFY2(right.isEmpty(), qPrintable(right));
     }
 
     void impulseMistake()
@@ -247,7 +334,7 @@ private slots:
     // Every model has a stable id, an equation and an explanation, and is found by its id.
     void catalogue()
     {
-        QCOMPARE(rbw::mistakeCatalogue().size(), size_t(15));
+        QCOMPARE(rbw::mistakeCatalogue().size(), size_t(20));   // 15 of issue 10, 5 of issue 21
         for (const rbw::MistakeInfo& m : rbw::mistakeCatalogue()) {
             QVERIFY(rbw::findMistake(m.id) == &m);
             QVERIFY(std::strlen(m.equation) > 0 && std::strlen(m.explanation) > 0);
