@@ -1,6 +1,7 @@
 #include "app/scene/scene_writer.h"
 
 #include "app/output/atomic_file.h"
+#include "app/scene/scene_format.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -13,6 +14,10 @@
 
 namespace rbw {
 namespace {
+
+using sceneformat::key;
+using sceneformat::word;
+using K = sceneformat::Key;
 
 struct Member {
     QString key;
@@ -32,25 +37,9 @@ QJsonArray vec(const Vec3& v) { return QJsonArray{v.x(), v.y(), v.z()}; }
 // Whole numbers as JSON integers ("steps": 1000000000, not 1e+09).
 QJsonValue whole(long n) { return QJsonValue(static_cast<qint64>(n)); }
 
-QString convention(InertiaConvention c)
-{
-    return c == InertiaConvention::CourseTemplate ? QStringLiteral("course-template") : QStringLiteral("standard");
-}
-
-QString contactModel(ContactModel m)
-{
-    return m == ContactModel::Manifold ? QStringLiteral("manifold") : QStringLiteral("course");
-}
-
-QString positionFix(PositionFix f)
-{
-    switch (f) {
-    case PositionFix::Ngs: return QStringLiteral("ngs");
-    case PositionFix::Baumgarte: return QStringLiteral("baumgarte");
-    case PositionFix::None: return QStringLiteral("none");
-    }
-    return {};
-}
+QString convention(InertiaConvention c) { return word(c); }
+QString contactModel(ContactModel m) { return word(m); }
+QString positionFix(PositionFix f) { return word(f); }
 
 // The name a reference is written with: the body's (plane's) own name when the index
 // names one, else the name the file gave (a scene that would not validate).
@@ -71,49 +60,49 @@ QString pairSecond(const SceneDef& s, const PairOverride& p)
 
 Members bodyMembers(const BodyDef& b)
 {
-    Members m{{"name", QString::fromStdString(b.name)}, {"size", vec(b.size)}};
-    if (!b.fixed) m.append({"mass", b.mass});
-    if (b.fixed) m.append({"fixed", true});
-    m.append({"position", vec(b.x0_W)});
+    Members m{{key(K::BodyName), QString::fromStdString(b.name)}, {key(K::BodySize), vec(b.size)}};
+    if (!b.fixed) m.append({key(K::BodyMass), b.mass});
+    if (b.fixed) m.append({key(K::BodyFixed), true});
+    m.append({key(K::BodyPosition), vec(b.x0_W)});
     const Quat& q = b.q0_WB;
-    m.append({"orientation", QJsonObject{{"quaternion", QJsonArray{q.w(), q.x(), q.y(), q.z()}}}});
-    m.append({"linear_velocity", vec(b.v0_W)});
-    m.append({"angular_velocity", vec(b.omega0_W)});
-    if (!b.angularResponse) m.append({"angular_response", false});
-    if (!b.integrator.empty()) m.append({"integrator", QString::fromStdString(b.integrator)});
-    if (b.inertiaConvention) m.append({"inertia_convention", convention(*b.inertiaConvention)});
+    m.append({key(K::BodyOrientation), QJsonObject{{key(K::OrientationQuaternion), QJsonArray{q.w(), q.x(), q.y(), q.z()}}}});
+    m.append({key(K::BodyLinearVelocity), vec(b.v0_W)});
+    m.append({key(K::BodyAngularVelocity), vec(b.omega0_W)});
+    if (!b.angularResponse) m.append({key(K::BodyAngularResponse), false});
+    if (!b.integrator.empty()) m.append({key(K::BodyIntegrator), QString::fromStdString(b.integrator)});
+    if (b.inertiaConvention) m.append({key(K::BodyInertiaConvention), convention(*b.inertiaConvention)});
     return m;
 }
 
 Members forceMembers(const SceneDef& s, const ForceDef& f)
 {
-    return {{"body", bodyRef(s, f.body, f.bodyName)},
-            {"point", vec(f.p_W)},
-            {"force", vec(f.f_W)},
-            {"from_step", whole(f.fromStep)},
-            {"to_step", whole(f.toStep)}};
+    return {{key(K::ForceBody), bodyRef(s, f.body, f.bodyName)},
+            {key(K::ForcePoint), vec(f.p_W)},
+            {key(K::ForceForce), vec(f.f_W)},
+            {key(K::ForceFromStep), whole(f.fromStep)},
+            {key(K::ForceToStep), whole(f.toStep)}};
 }
 
 Members torqueMembers(const SceneDef& s, const TorqueDef& t)
 {
-    Members m{{"body", bodyRef(s, t.body, t.bodyName)}, {"torque", vec(t.q_W)}, {"from_step", whole(t.fromStep)}};
+    Members m{{key(K::TorqueBody), bodyRef(s, t.body, t.bodyName)}, {key(K::TorqueTorque), vec(t.q_W)}, {key(K::TorqueFromStep), whole(t.fromStep)}};
     // Left out, a torque lasts for ever (the loader's default), which no number says.
-    if (t.toStep != std::numeric_limits<long>::max()) m.append({"to_step", whole(t.toStep)});
-    if (t.switchable) m.append({"switchable", true});
-    if (!t.enabledAtStart) m.append({"enabled", false});
+    if (t.toStep != std::numeric_limits<long>::max()) m.append({key(K::TorqueToStep), whole(t.toStep)});
+    if (t.switchable) m.append({key(K::TorqueSwitchable), true});
+    if (!t.enabledAtStart) m.append({key(K::TorqueEnabled), false});
     return m;
 }
 
 Members planeMembers(const PlaneDef& p)
 {
-    return {{"name", QString::fromStdString(p.name)}, {"point", vec(p.point_W)}, {"normal", vec(p.n_W)}};
+    return {{key(K::PlaneName), QString::fromStdString(p.name)}, {key(K::PlanePoint), vec(p.point_W)}, {key(K::PlaneNormal), vec(p.n_W)}};
 }
 
 Members pairMembers(const SceneDef& s, const PairOverride& p)
 {
-    Members m{{"bodies", QJsonArray{bodyRef(s, p.bodyA, p.nameA), pairSecond(s, p)}}};
-    if (p.restitution) m.append({"restitution", *p.restitution});
-    if (p.friction) m.append({"friction", *p.friction});
+    Members m{{key(K::PairBodies), QJsonArray{bodyRef(s, p.bodyA, p.nameA), pairSecond(s, p)}}};
+    if (p.restitution) m.append({key(K::PairRestitution), *p.restitution});
+    if (p.friction) m.append({key(K::PairFriction), *p.friction});
     return m;
 }
 
@@ -127,39 +116,38 @@ struct Layout {
 Layout layout(const SceneDef& s)
 {
     Layout l;
-    l.settings = {{"name", QString::fromStdString(s.name)},
-                  {"description", QString::fromStdString(s.description)},
-                  {"dt", s.dt},
-                  {"steps", whole(s.steps)},
-                  {"integrator", QString::fromStdString(s.integrator)},
-                  {"inertia_convention", convention(s.inertiaConvention)},
-                  {"gravity", vec(s.g_W)},
-                  {"box_collisions", s.boxCollisions},
-                  {"restitution", s.restitution},
-                  {"restitution_threshold", s.restitutionThreshold},
-                  {"friction", s.friction},
-                  {"position_correction", s.positionCorrection},
-                  {"plane_contacts", s.planeContacts == PlaneContactMode::Average ? QStringLiteral("average")
-                                                                                  : QStringLiteral("per-point")},
-                  {"energy_jump", QJsonObject{{"factor", s.energyJumpFactor}, {"floor", s.energyJumpFloor}}},
-                  {"contact_model", contactModel(s.contactModel)}};
+    l.settings = {{key(K::Name), QString::fromStdString(s.name)},
+                  {key(K::Description), QString::fromStdString(s.description)},
+                  {key(K::Dt), s.dt},
+                  {key(K::Steps), whole(s.steps)},
+                  {key(K::Integrator), QString::fromStdString(s.integrator)},
+                  {key(K::InertiaConvention), convention(s.inertiaConvention)},
+                  {key(K::Gravity), vec(s.g_W)},
+                  {key(K::BoxCollisions), s.boxCollisions},
+                  {key(K::Restitution), s.restitution},
+                  {key(K::RestitutionThreshold), s.restitutionThreshold},
+                  {key(K::Friction), s.friction},
+                  {key(K::PositionCorrection), s.positionCorrection},
+                  {key(K::PlaneContacts), word(s.planeContacts)},
+                  {key(K::EnergyJump), QJsonObject{{key(K::EnergyJumpFactor), s.energyJumpFactor}, {key(K::EnergyJumpFloor), s.energyJumpFloor}}},
+                  {key(K::ContactModel), contactModel(s.contactModel)}};
     // The manifold model's keys, only when given (left out, the model's defaults).
-    if (s.solverIterations) l.settings.append({"solver_iterations", whole(*s.solverIterations)});
-    if (s.sleep) l.settings.append({"sleep", *s.sleep});
-    if (s.positionFix) l.settings.append({"position_fix", positionFix(*s.positionFix)});
+    if (s.solverIterations) l.settings.append({key(K::SolverIterations), whole(*s.solverIterations)});
+    if (s.sleep) l.settings.append({key(K::Sleep), *s.sleep});
+    if (s.positionFix) l.settings.append({key(K::PositionFix), positionFix(*s.positionFix)});
     QList<Members> bodies, planes, forces, torques, probes, pairs;
     for (const BodyDef& b : s.bodies) bodies << bodyMembers(b);
     for (const PlaneDef& p : s.planes) planes << planeMembers(p);
     for (const ForceDef& f : s.forces) forces << forceMembers(s, f);
     for (const TorqueDef& t : s.torques) torques << torqueMembers(s, t);
-    for (const ProbeDef& p : s.probes) probes << Members{{"body", bodyRef(s, p.body, p.bodyName)}, {"point", vec(p.p0_W)}};
+    for (const ProbeDef& p : s.probes) probes << Members{{key(K::ProbeBody), bodyRef(s, p.body, p.bodyName)}, {key(K::ProbePoint), vec(p.p0_W)}};
     for (const PairOverride& p : s.pairs) pairs << pairMembers(s, p);
-    l.lists = {{"bodies", bodies}, {"planes", planes}, {"forces", forces},
-               {"torques", torques}, {"probes", probes}, {"pairs", pairs}};
+    l.lists = {{key(K::Bodies), bodies}, {key(K::Planes), planes}, {key(K::Forces), forces},
+               {key(K::Torques), torques}, {key(K::Probes), probes}, {key(K::Pairs), pairs}};
     if (s.push.body >= 0 || !s.push.bodyName.empty()) {
-        l.push = Members{{"body", bodyRef(s, s.push.body, s.push.bodyName)},
-                         {"point", vec(s.push.p_B)},
-                         {"force", s.push.magnitude}};
+        l.push = Members{{key(K::PushBody), bodyRef(s, s.push.body, s.push.bodyName)},
+                         {key(K::PushPoint), vec(s.push.p_B)},
+                         {key(K::PushForce), s.push.magnitude}};
     }
     return l;
 }
@@ -197,12 +185,12 @@ QJsonObject sceneToJson(const SceneDef& scene)
     const Layout l = layout(scene);
     QJsonObject o = toObject(l.settings);
     for (const auto& [key, list] : l.lists) {
-        if (key != QLatin1String("bodies") && list.isEmpty()) continue;
+        if (key != sceneformat::key(K::Bodies) && list.isEmpty()) continue;
         QJsonArray a;
         for (const Members& m : list) a.append(toObject(m));
         o.insert(key, a);
     }
-    if (l.push) o.insert("push", toObject(*l.push));
+    if (l.push) o.insert(key(K::Push), toObject(*l.push));
     return o;
 }
 
@@ -212,12 +200,12 @@ QByteArray writeScene(const SceneDef& scene)
     QByteArrayList lines;
     for (const Member& m : l.settings) lines << "  " + oneLine(m.key) + ": " + oneLine(m.value);
     for (const auto& [key, list] : l.lists) {
-        if (key != QLatin1String("bodies") && list.isEmpty()) continue;
+        if (key != sceneformat::key(K::Bodies) && list.isEmpty()) continue;
         QByteArrayList items;
         for (const Members& m : list) items << "    " + oneLine(m);
         lines << "  " + oneLine(key) + ": [\n" + items.join(",\n") + "\n  ]";
     }
-    if (l.push) lines << "  \"push\": " + oneLine(*l.push);
+    if (l.push) lines << "  " + oneLine(key(K::Push)) + ": " + oneLine(*l.push);
     return "{\n" + lines.join(",\n") + "\n}\n";
 }
 
@@ -278,114 +266,116 @@ public:
     }
 };
 
-QString at(const char* list, std::size_t i) { return QStringLiteral("%1[%2]").arg(QLatin1String(list)).arg(i); }
+QString at(K list, std::size_t i) { return QStringLiteral("%1[%2]").arg(key(list)).arg(i); }
 
 } // namespace
 
 QStringList sceneDifferences(const SceneDef& a, const SceneDef& b)
 {
     Differ d;
-    d.value("name", a.name, b.name);
-    d.value("description", a.description, b.description);
-    d.value("dt", a.dt, b.dt);
-    d.value("steps", a.steps, b.steps);
-    d.value("integrator", a.integrator, b.integrator);
-    d.value("inertia_convention", convention(a.inertiaConvention), convention(b.inertiaConvention));
-    d.value("gravity", a.g_W, b.g_W);
-    if (d.sizes("bodies", a.bodies.size(), b.bodies.size())) {
+    const QString push = key(K::Push) + '.';
+    const QString energyJump = key(K::EnergyJump) + '.';
+    d.value(key(K::Name), a.name, b.name);
+    d.value(key(K::Description), a.description, b.description);
+    d.value(key(K::Dt), a.dt, b.dt);
+    d.value(key(K::Steps), a.steps, b.steps);
+    d.value(key(K::Integrator), a.integrator, b.integrator);
+    d.value(key(K::InertiaConvention), convention(a.inertiaConvention), convention(b.inertiaConvention));
+    d.value(key(K::Gravity), a.g_W, b.g_W);
+    if (d.sizes(key(K::Bodies), a.bodies.size(), b.bodies.size())) {
         for (std::size_t i = 0; i < a.bodies.size(); ++i) {
             const BodyDef& x = a.bodies[i];
             const BodyDef& y = b.bodies[i];
-            const QString p = at("bodies", i);
-            d.value(p + ".name", x.name, y.name);
-            d.value(p + ".size", x.size, y.size);
-            d.value(p + ".fixed", x.fixed, y.fixed);
-            if (!x.fixed && !y.fixed) d.value(p + ".mass", x.mass, y.mass);
-            d.value(p + ".angular_response", x.angularResponse, y.angularResponse);
-            d.value(p + ".position", x.x0_W, y.x0_W);
-            d.value(p + ".orientation", x.q0_WB, y.q0_WB);
-            d.value(p + ".linear_velocity", x.v0_W, y.v0_W);
-            d.value(p + ".angular_velocity", x.omega0_W, y.omega0_W);
-            d.value(p + ".integrator", x.integrator, y.integrator);
-            d.value(p + ".inertia_convention", x.inertiaConvention ? convention(*x.inertiaConvention) : QStringLiteral("(scene's)"),
+            const QString p = at(K::Bodies, i);
+            d.value(p + '.' + key(K::BodyName), x.name, y.name);
+            d.value(p + '.' + key(K::BodySize), x.size, y.size);
+            d.value(p + '.' + key(K::BodyFixed), x.fixed, y.fixed);
+            if (!x.fixed && !y.fixed) d.value(p + '.' + key(K::BodyMass), x.mass, y.mass);
+            d.value(p + '.' + key(K::BodyAngularResponse), x.angularResponse, y.angularResponse);
+            d.value(p + '.' + key(K::BodyPosition), x.x0_W, y.x0_W);
+            d.value(p + '.' + key(K::BodyOrientation), x.q0_WB, y.q0_WB);
+            d.value(p + '.' + key(K::BodyLinearVelocity), x.v0_W, y.v0_W);
+            d.value(p + '.' + key(K::BodyAngularVelocity), x.omega0_W, y.omega0_W);
+            d.value(p + '.' + key(K::BodyIntegrator), x.integrator, y.integrator);
+            d.value(p + '.' + key(K::BodyInertiaConvention), x.inertiaConvention ? convention(*x.inertiaConvention) : QStringLiteral("(scene's)"),
                     y.inertiaConvention ? convention(*y.inertiaConvention) : QStringLiteral("(scene's)"));
         }
     }
-    if (d.sizes("forces", a.forces.size(), b.forces.size())) {
+    if (d.sizes(key(K::Forces), a.forces.size(), b.forces.size())) {
         for (std::size_t i = 0; i < a.forces.size(); ++i) {
             const ForceDef& x = a.forces[i];
             const ForceDef& y = b.forces[i];
-            const QString p = at("forces", i);
-            d.value(p + ".body", bodyRef(a, x.body, x.bodyName), bodyRef(b, y.body, y.bodyName));
-            d.value(p + ".body (index)", static_cast<long>(x.body), static_cast<long>(y.body));
-            d.value(p + ".point", x.p_W, y.p_W);
-            d.value(p + ".force", x.f_W, y.f_W);
-            d.value(p + ".from_step", x.fromStep, y.fromStep);
-            d.value(p + ".to_step", x.toStep, y.toStep);
+            const QString p = at(K::Forces, i);
+            d.value(p + '.' + key(K::ForceBody), bodyRef(a, x.body, x.bodyName), bodyRef(b, y.body, y.bodyName));
+            d.value(p + '.' + key(K::ForceBody) + " (index)", static_cast<long>(x.body), static_cast<long>(y.body));
+            d.value(p + '.' + key(K::ForcePoint), x.p_W, y.p_W);
+            d.value(p + '.' + key(K::ForceForce), x.f_W, y.f_W);
+            d.value(p + '.' + key(K::ForceFromStep), x.fromStep, y.fromStep);
+            d.value(p + '.' + key(K::ForceToStep), x.toStep, y.toStep);
         }
     }
-    if (d.sizes("torques", a.torques.size(), b.torques.size())) {
+    if (d.sizes(key(K::Torques), a.torques.size(), b.torques.size())) {
         for (std::size_t i = 0; i < a.torques.size(); ++i) {
             const TorqueDef& x = a.torques[i];
             const TorqueDef& y = b.torques[i];
-            const QString p = at("torques", i);
-            d.value(p + ".body", bodyRef(a, x.body, x.bodyName), bodyRef(b, y.body, y.bodyName));
-            d.value(p + ".body (index)", static_cast<long>(x.body), static_cast<long>(y.body));
-            d.value(p + ".torque", x.q_W, y.q_W);
-            d.value(p + ".from_step", x.fromStep, y.fromStep);
-            d.value(p + ".to_step", x.toStep, y.toStep);
-            d.value(p + ".switchable", x.switchable, y.switchable);
-            d.value(p + ".enabled", x.enabledAtStart, y.enabledAtStart);
+            const QString p = at(K::Torques, i);
+            d.value(p + '.' + key(K::TorqueBody), bodyRef(a, x.body, x.bodyName), bodyRef(b, y.body, y.bodyName));
+            d.value(p + '.' + key(K::TorqueBody) + " (index)", static_cast<long>(x.body), static_cast<long>(y.body));
+            d.value(p + '.' + key(K::TorqueTorque), x.q_W, y.q_W);
+            d.value(p + '.' + key(K::TorqueFromStep), x.fromStep, y.fromStep);
+            d.value(p + '.' + key(K::TorqueToStep), x.toStep, y.toStep);
+            d.value(p + '.' + key(K::TorqueSwitchable), x.switchable, y.switchable);
+            d.value(p + '.' + key(K::TorqueEnabled), x.enabledAtStart, y.enabledAtStart);
         }
     }
-    d.value("push.body", bodyRef(a, a.push.body, a.push.bodyName), bodyRef(b, b.push.body, b.push.bodyName));
-    d.value("push.body (index)", static_cast<long>(a.push.body), static_cast<long>(b.push.body));
-    d.value("push.point", a.push.p_B, b.push.p_B);
-    d.value("push.force", a.push.magnitude, b.push.magnitude);
-    if (d.sizes("probes", a.probes.size(), b.probes.size())) {
+    d.value(push + key(K::PushBody), bodyRef(a, a.push.body, a.push.bodyName), bodyRef(b, b.push.body, b.push.bodyName));
+    d.value(push + key(K::PushBody) + " (index)", static_cast<long>(a.push.body), static_cast<long>(b.push.body));
+    d.value(push + key(K::PushPoint), a.push.p_B, b.push.p_B);
+    d.value(push + key(K::PushForce), a.push.magnitude, b.push.magnitude);
+    if (d.sizes(key(K::Probes), a.probes.size(), b.probes.size())) {
         for (std::size_t i = 0; i < a.probes.size(); ++i) {
-            const QString p = at("probes", i);
-            d.value(p + ".body", bodyRef(a, a.probes[i].body, a.probes[i].bodyName),
+            const QString p = at(K::Probes, i);
+            d.value(p + '.' + key(K::ProbeBody), bodyRef(a, a.probes[i].body, a.probes[i].bodyName),
                     bodyRef(b, b.probes[i].body, b.probes[i].bodyName));
-            d.value(p + ".body (index)", static_cast<long>(a.probes[i].body), static_cast<long>(b.probes[i].body));
-            d.value(p + ".point", a.probes[i].p0_W, b.probes[i].p0_W);
+            d.value(p + '.' + key(K::ProbeBody) + " (index)", static_cast<long>(a.probes[i].body), static_cast<long>(b.probes[i].body));
+            d.value(p + '.' + key(K::ProbePoint), a.probes[i].p0_W, b.probes[i].p0_W);
         }
     }
-    if (d.sizes("planes", a.planes.size(), b.planes.size())) {
+    if (d.sizes(key(K::Planes), a.planes.size(), b.planes.size())) {
         for (std::size_t i = 0; i < a.planes.size(); ++i) {
-            const QString p = at("planes", i);
-            d.value(p + ".name", a.planes[i].name, b.planes[i].name);
-            d.value(p + ".point", a.planes[i].point_W, b.planes[i].point_W);
-            d.value(p + ".normal", a.planes[i].n_W, b.planes[i].n_W);
+            const QString p = at(K::Planes, i);
+            d.value(p + '.' + key(K::PlaneName), a.planes[i].name, b.planes[i].name);
+            d.value(p + '.' + key(K::PlanePoint), a.planes[i].point_W, b.planes[i].point_W);
+            d.value(p + '.' + key(K::PlaneNormal), a.planes[i].n_W, b.planes[i].n_W);
         }
     }
-    d.value("box_collisions", a.boxCollisions, b.boxCollisions);
-    d.value("restitution", a.restitution, b.restitution);
-    d.value("friction", a.friction, b.friction);
-    d.value("restitution_threshold", a.restitutionThreshold, b.restitutionThreshold);
-    if (d.sizes("pairs", a.pairs.size(), b.pairs.size())) {
+    d.value(key(K::BoxCollisions), a.boxCollisions, b.boxCollisions);
+    d.value(key(K::Restitution), a.restitution, b.restitution);
+    d.value(key(K::Friction), a.friction, b.friction);
+    d.value(key(K::RestitutionThreshold), a.restitutionThreshold, b.restitutionThreshold);
+    if (d.sizes(key(K::Pairs), a.pairs.size(), b.pairs.size())) {
         for (std::size_t i = 0; i < a.pairs.size(); ++i) {
             const PairOverride& x = a.pairs[i];
             const PairOverride& y = b.pairs[i];
-            const QString p = at("pairs", i);
-            d.value(p + ".bodies[0]", bodyRef(a, x.bodyA, x.nameA), bodyRef(b, y.bodyA, y.nameA));
-            d.value(p + ".bodies[1]", pairSecond(a, x), pairSecond(b, y));
-            d.value(p + ".bodies (indices)", QStringLiteral("%1/%2/%3").arg(x.bodyA).arg(x.bodyB).arg(x.planeB),
+            const QString p = at(K::Pairs, i);
+            d.value(p + '.' + key(K::PairBodies) + "[0]", bodyRef(a, x.bodyA, x.nameA), bodyRef(b, y.bodyA, y.nameA));
+            d.value(p + '.' + key(K::PairBodies) + "[1]", pairSecond(a, x), pairSecond(b, y));
+            d.value(p + '.' + key(K::PairBodies) + " (indices)", QStringLiteral("%1/%2/%3").arg(x.bodyA).arg(x.bodyB).arg(x.planeB),
                     QStringLiteral("%1/%2/%3").arg(y.bodyA).arg(y.bodyB).arg(y.planeB));
-            d.value(p + ".restitution", x.restitution, y.restitution);
-            d.value(p + ".friction", x.friction, y.friction);
+            d.value(p + '.' + key(K::PairRestitution), x.restitution, y.restitution);
+            d.value(p + '.' + key(K::PairFriction), x.friction, y.friction);
         }
     }
-    d.value("position_correction", a.positionCorrection, b.positionCorrection);
-    d.value("plane_contacts", a.planeContacts == PlaneContactMode::Average, b.planeContacts == PlaneContactMode::Average);
-    d.value("energy_jump.factor", a.energyJumpFactor, b.energyJumpFactor);
-    d.value("energy_jump.floor", a.energyJumpFloor, b.energyJumpFloor);
-    d.value("contact_model", contactModel(a.contactModel), contactModel(b.contactModel));
-    d.value("solver_iterations", a.solverIterations ? QString::number(*a.solverIterations) : QStringLiteral("(none)"),
+    d.value(key(K::PositionCorrection), a.positionCorrection, b.positionCorrection);
+    d.value(key(K::PlaneContacts), a.planeContacts == PlaneContactMode::Average, b.planeContacts == PlaneContactMode::Average);
+    d.value(energyJump + key(K::EnergyJumpFactor), a.energyJumpFactor, b.energyJumpFactor);
+    d.value(energyJump + key(K::EnergyJumpFloor), a.energyJumpFloor, b.energyJumpFloor);
+    d.value(key(K::ContactModel), contactModel(a.contactModel), contactModel(b.contactModel));
+    d.value(key(K::SolverIterations), a.solverIterations ? QString::number(*a.solverIterations) : QStringLiteral("(none)"),
             b.solverIterations ? QString::number(*b.solverIterations) : QStringLiteral("(none)"));
-    d.value("sleep", a.sleep ? QString::number(*a.sleep) : QStringLiteral("(none)"),
+    d.value(key(K::Sleep), a.sleep ? QString::number(*a.sleep) : QStringLiteral("(none)"),
             b.sleep ? QString::number(*b.sleep) : QStringLiteral("(none)"));
-    d.value("position_fix", a.positionFix ? positionFix(*a.positionFix) : QStringLiteral("(none)"),
+    d.value(key(K::PositionFix), a.positionFix ? positionFix(*a.positionFix) : QStringLiteral("(none)"),
             b.positionFix ? positionFix(*b.positionFix) : QStringLiteral("(none)"));
     return d.out;
 }

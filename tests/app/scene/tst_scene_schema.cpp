@@ -10,9 +10,11 @@
 //     except for the classes listed below, whose rules relate values to each other
 //     (or are not JSON at all) and so lie beyond a schema;
 //   - the schema's list of integrators is the physics' registry, and its closed objects
-//     hold exactly the keys the loader allows (read from scene_mapping.cpp's checkKeys()).
+//     hold exactly the keys the loader allows (the objects of the scene-format table,
+//     app/scene/scene_format.h, whose lists the loader checks keys against).
 // The validator (tests/support/json_schema.h) is checked first, keyword by keyword,
 // on schemas whose verdicts follow from the JSON Schema specification.
+#include "app/scene/scene_format.h"
 #include "app/scene/scene_loader.h"
 #include "app/scene/scene_writer.h"
 #include "physics/engine/integrator_registry.h"
@@ -228,20 +230,18 @@ void TestSceneSchema::integratorsAreTheRegistry()
     QCOMPARE(schemaNames, registry);
 }
 
-// Every list of keys the loader allows (its checkKeys() calls in scene_mapping.cpp) is
-// exactly the keys of one closed object of the schema (additionalProperties false; an
-// orientation's forms together), and every closed object is one of the loader's: a key
-// added to one and not the other fails here.
+// Every list of keys the loader allows (the scene-format table's objects, which the
+// loader's checkKeys() calls use) is exactly the keys of one closed object of the schema
+// (additionalProperties false; an orientation's forms together), and every closed object
+// is one of the loader's: a key added to one and not the other fails here.
 void TestSceneSchema::keysAreTheLoaders()
 {
+    using sceneformat::Section;
     QList<QSet<QString>> loader;
-    const QString source = QString::fromUtf8(readFile(kSource + QStringLiteral("/app/scene/scene_mapping.cpp")));
-    static const QRegularExpression call(QStringLiteral("checkKeys\\(\\w+, [^,{]+, \\{([^}]*)\\}\\)"));
-    static const QRegularExpression word(QStringLiteral("\"([a-z_]+)\""));
-    for (auto m = call.globalMatch(source); m.hasNext();) {
-        QSet<QString> keys;
-        for (auto w = word.globalMatch(m.next().captured(1)); w.hasNext();) keys.insert(w.next().captured(1));
-        loader << keys;
+    for (Section s : {Section::Scene, Section::EnergyJump, Section::Body, Section::Orientation, Section::Force,
+                      Section::Torque, Section::Push, Section::Probe, Section::Plane, Section::Pair}) {
+        const QStringList keys = sceneformat::keysOf(s);
+        loader << QSet<QString>(keys.begin(), keys.end());
     }
     QVERIFY2(loader.size() >= 10, qPrintable(QString::number(loader.size())));
 

@@ -9,65 +9,86 @@
 
 namespace rbw::editorfields {
 
-QString positionFixText(PositionFix f)
+namespace {
+
+using K = sceneformat::Key;
+using sceneformat::Section;
+using sceneformat::Type;
+
+Section sectionOf(int group)
 {
-    return f == PositionFix::Ngs ? QStringLiteral("ngs") : f == PositionFix::Baumgarte ? QStringLiteral("baumgarte")
-                                                                                        : QStringLiteral("none");
+    switch (group) {
+    case SceneEditorModel::Bodies: return Section::Body;
+    case SceneEditorModel::Forces: return Section::Force;
+    case SceneEditorModel::Torques: return Section::Torque;
+    case SceneEditorModel::Probes: return Section::Probe;
+    case SceneEditorModel::Planes: return Section::Plane;
+    case SceneEditorModel::Pairs: return Section::Pair;
+    default: return Section::Scene;
+    }
 }
 
-const QHash<QString, KeyInfo>& keyInfo()
+} // namespace
+
+namespace {
+
+QList<Field> makeFields(int group)
 {
-    static const QHash<QString, KeyInfo> info{
-        {"name", {"", "title of the scene; unique name of a body or plane"}},
-        {"description", {"", "one-line summary"}},
-        {"dt", {"s", "time step h; > 0"}},
-        {"steps", {"", "steps `rbw run` takes; 0 … 10^9"}},
-        {"integrator", {"", "integration method (rbw integrators)"}},
-        {"inertia_convention", {"", "standard: I⁻¹ = R I0⁻¹ Rᵀ; course-template: Rᵀ I0⁻¹ R"}},
-        {"gravity", {"m/s²", "gravitational acceleration g, world frame"}},
-        {"box_collisions", {"", "boxes collide with each other"}},
-        {"restitution", {"", "coefficient of restitution c, 0 … 1"}},
-        {"restitution_threshold", {"m/s", "approaches slower than this do not bounce; 0 is off"}},
-        {"friction", {"", "Coulomb friction coefficient μ ≥ 0"}},
-        {"position_correction", {"", "push penetrating bodies apart after the impulses"}},
-        {"plane_contacts", {"", "per-point: one impulse per corner; average: one at their mean"}},
-        {"energy_jump.factor", {"", "blow-up bound: 0 (off) or ≥ 1"}},
-        {"energy_jump.floor", {"J", "blow-up bound floor, ≥ 0"}},
-        {"size", {"m", "edge lengths a, b, c along body x, y, z"}},
-        {"mass", {"kg", "M > 0 (a fixed body has none)"}},
-        {"fixed", {"", "infinite mass: never moves"}},
-        {"position", {"m", "centre of mass at t = 0"}},
-        {"orientation", {"", "unit quaternion w, x, y, z (body → world) at t = 0; normalised"}},
-        {"linear_velocity", {"m/s", "v at t = 0"}},
-        {"angular_velocity", {"rad/s", "ω at t = 0, world frame"}},
-        {"angular_response", {"", "off: in collisions a particle (L never changes)"}},
-        {"body", {"", "the body it acts on"}},
-        {"point", {"m", "world point at t = 0"}},
-        {"force", {"N", "force f, world frame"}},
-        {"torque", {"N m", "torque q, world frame"}},
-        {"from_step", {"", "first step in which it acts"}},
-        {"to_step", {"", "first step in which it no longer acts"}},
-        {"switchable", {"", "the K key turns it off and on"}},
-        {"enabled", {"", "on at the start"}},
-        {"normal", {"", "towards the free side; normalised"}},
-        {"bodies[0]", {"", "a body"}},
-        {"contact_model", {"", "course: one impulse per contact point; manifold: manifolds and an iterative solver"}},
-        {"solver_iterations", {"", "manifold model: velocity iterations (empty: the default)"}},
-        {"sleep", {"", "manifold model: bodies at rest sleep"}},
-        {"position_fix", {"", "manifold model: how overlap is removed"}},
-        {"bodies[1]", {"", "a body or a plane"}},
-    };
-    return info;
+    QList<Field> fields;
+    const Section section = sectionOf(group);
+    for (const sceneformat::KeyRow& r : sceneformat::rows()) {
+        if (r.section != section) continue;
+        if (r.id == K::EnergyJump) {
+            fields << Field{K::EnergyJumpFactor} << Field{K::EnergyJumpFloor};
+        } else if (r.type == Type::NamePair) {
+            fields << Field{r.id, 0} << Field{r.id, 1};
+        } else if (r.type != Type::List && r.id != K::Push) {   // the push has no group of its own
+            fields << Field{r.id};
+        }
+    }
+    return fields;
+}
+
+} // namespace
+
+QList<Field> fieldsOf(int group)
+{
+    // Built once: data() asks for every cell.
+    static const QList<QList<Field>> all = [] {
+        QList<QList<Field>> lists;
+        for (int g = 0; g < SceneEditorModel::GroupCount; ++g) lists << makeFields(g);
+        return lists;
+    }();
+    return all.value(group);
+}
+
+QString fieldName(const Field& f)
+{
+    if (f.index >= 0) return QStringLiteral("%1[%2]").arg(sceneformat::key(f.key)).arg(f.index);
+    if (sceneformat::row(f.key).section == Section::EnergyJump) {
+        return sceneformat::key(K::EnergyJump) + '.' + sceneformat::key(f.key);
+    }
+    return sceneformat::key(f.key);
+}
+
+QString fieldUnit(const Field& f) { return QString::fromUtf8(sceneformat::row(f.key).unit); }
+
+QString fieldMeaning(const Field& f)
+{
+    if (f.index == 0) return QStringLiteral("a body");
+    if (f.index == 1) return QStringLiteral("a body or a plane");
+    return QString::fromUtf8(sceneformat::row(f.key).meaning);
+}
+
+bool isCheckBox(const Field& f)
+{
+    const sceneformat::KeyRow& r = sceneformat::row(f.key);
+    return r.type == Type::Boolean && *r.fallback;
 }
 
 QString num(double x) { return QString::number(x, 'g', QLocale::FloatingPointShortest); }
 
 QString vecText(const Vec3& v) { return QStringLiteral("%1, %2, %3").arg(num(v.x()), num(v.y()), num(v.z())); }
-
-QString convention(InertiaConvention c)
-{
-    return c == InertiaConvention::CourseTemplate ? QStringLiteral("course-template") : QStringLiteral("standard");
-}
 
 QString quoted(const QString& text) { return QStringLiteral("\"%1\"").arg(text.left(40)); }
 
@@ -124,14 +145,6 @@ bool parseVec(const QString& text, Vec3* v, QString* error)
     if (!parseNumbers(text, 3, &n, error)) return false;
     *v = Vec3(n[0], n[1], n[2]);
     return true;
-}
-
-bool isBool(int group, const QString& key)
-{
-    if (group == SceneEditorModel::Settings) return key == "box_collisions" || key == "position_correction";
-    if (group == SceneEditorModel::Bodies) return key == "fixed" || key == "angular_response";
-    if (group == SceneEditorModel::Torques) return key == "switchable" || key == "enabled";
-    return false;
 }
 
 } // namespace rbw::editorfields

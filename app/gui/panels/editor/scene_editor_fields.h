@@ -4,6 +4,7 @@
 // \"abc\"").
 #pragma once
 
+#include "app/scene/scene_format.h"
 #include "physics/engine/scene.h"
 
 #include <QHash>
@@ -23,15 +24,25 @@ inline const QString kScenes = QStringLiteral("(scene's)");
 inline const QString kNever = QStringLiteral("never");
 inline const QString kDefault = QStringLiteral("(default)");
 
-// The unit shown beside a key, and a one-line meaning (docs/scene-format.md).
-struct KeyInfo {
-    const char* unit;
-    const char* meaning;
+// One row of an element (or of the settings): a key of the scene-format table, and for
+// a pair's two names which of them (0, 1; -1 for every other key).
+struct Field {
+    sceneformat::Key key;
+    int index = -1;
 };
-const QHash<QString, KeyInfo>& keyInfo();
 
-QString positionFixText(PositionFix f);
-QString convention(InertiaConvention c);
+// The rows of a group (SceneEditorModel::Group), in the table's order: the settings are
+// the top-level keys with a single value (energy_jump's two keys inline), the other
+// groups the keys of their element's object.
+QList<Field> fieldsOf(int group);
+// The row's key as the tree and the paths show it: "mass", "energy_jump.factor", "bodies[1]".
+QString fieldName(const Field& f);
+// The unit shown beside it ("" for none), and its meaning (the table's).
+QString fieldUnit(const Field& f);
+QString fieldMeaning(const Field& f);
+// A true/false key with a default is a check box (sleep, which may be left out, is a choice).
+bool isCheckBox(const Field& f);
+
 
 // The shortest text that reads back as the same double.
 QString num(double x);
@@ -53,8 +64,5 @@ V normalisedAsLoaded(const V& v)
 {
     return std::abs(v.squaredNorm() - 1.0) <= 16 * std::numeric_limits<double>::epsilon() ? v : v.normalized();
 }
-
-// Whether the key of a group (SceneEditorModel::Group) is a check box.
-bool isBool(int group, const QString& key);
 
 } // namespace rbw::editorfields

@@ -12,8 +12,10 @@ using namespace editorfields;
 
 namespace {
 
+using K = sceneformat::Key;
+
 // The scene-file key of each group's list, and its title in the tree.
-const char* const kGroupKeys[] = {"", "bodies", "forces", "torques", "probes", "planes", "pairs"};
+const K kGroupKeys[] = {K::Name, K::Bodies, K::Forces, K::Torques, K::Probes, K::Planes, K::Pairs};   // Settings: none
 const char* const kGroupTitles[] = {"Settings", "Bodies", "Forces", "Torques", "Probes", "Planes", "Pairs"};
 
 // Row identity: SceneEditorModel::pack() stores group, element + 1 and property + 1.
@@ -77,35 +79,14 @@ int SceneEditorModel::elementCount(int group) const
     }
 }
 
-QStringList SceneEditorModel::properties(int group) const
-{
-    switch (group) {
-    case Settings:
-        return {"name",        "description",           "dt",       "steps",
-                "integrator",  "inertia_convention",    "gravity",  "box_collisions",
-                "restitution", "restitution_threshold", "friction", "position_correction",
-                "plane_contacts", "energy_jump.factor", "energy_jump.floor", "contact_model",
-                "solver_iterations", "sleep", "position_fix"};
-    case Bodies:
-        return {"name",     "size",            "mass",             "fixed",           "position", "orientation",
-                "linear_velocity", "angular_velocity", "angular_response", "integrator", "inertia_convention"};
-    case Forces: return {"body", "point", "force", "from_step", "to_step"};
-    case Torques: return {"body", "torque", "from_step", "to_step", "switchable", "enabled"};
-    case Probes: return {"body", "point"};
-    case Planes: return {"name", "point", "normal"};
-    case Pairs: return {"bodies[0]", "bodies[1]", "restitution", "friction"};
-    default: return {};
-    }
-}
-
 QString SceneEditorModel::pathOf(int group, int element, int property) const
 {
-    if (group == Settings) return property < 0 ? QString() : properties(group).value(property);
-    QString path = QString::fromLatin1(kGroupKeys[group]);
+    if (group == Settings) return property < 0 ? QString() : fieldName(fieldsOf(group).value(property));
+    QString path = sceneformat::key(kGroupKeys[group]);
     if (element < 0) return path;
     path += QStringLiteral("[%1]").arg(element);
     if (property < 0) return path;
-    return path + '.' + properties(group).value(property);
+    return path + '.' + fieldName(fieldsOf(group).value(property));
 }
 
 QStringList SceneEditorModel::bodyNames() const
@@ -161,10 +142,10 @@ QModelIndex SceneEditorModel::index(int row, int column, const QModelIndex& pare
     const int property = decodeProperty(id);
     if (property >= 0) return {};   // a property has no children
     if (group == Settings) {
-        return row < properties(Settings).size() ? createIndex(row, column, pack(Settings, -1, row)) : QModelIndex();
+        return row < fieldsOf(Settings).size() ? createIndex(row, column, pack(Settings, -1, row)) : QModelIndex();
     }
     if (element < 0) return row < elementCount(group) ? createIndex(row, column, pack(group, row, -1)) : QModelIndex();
-    return row < properties(group).size() ? createIndex(row, column, pack(group, element, row)) : QModelIndex();
+    return row < fieldsOf(group).size() ? createIndex(row, column, pack(group, element, row)) : QModelIndex();
 }
 
 QModelIndex SceneEditorModel::parent(const QModelIndex& child) const
@@ -187,8 +168,8 @@ int SceneEditorModel::rowCount(const QModelIndex& parent) const
     const int group = decodeGroup(id);
     const int element = decodeElement(id);
     if (decodeProperty(id) >= 0) return 0;
-    if (group == Settings) return static_cast<int>(properties(Settings).size());
-    return element < 0 ? elementCount(group) : static_cast<int>(properties(group).size());
+    if (group == Settings) return static_cast<int>(fieldsOf(Settings).size());
+    return element < 0 ? elementCount(group) : static_cast<int>(fieldsOf(group).size());
 }
 
 int SceneEditorModel::columnCount(const QModelIndex&) const { return ColumnCount; }
@@ -216,9 +197,9 @@ Qt::ItemFlags SceneEditorModel::flags(const QModelIndex& index) const
     Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
     if (property < 0 || index.column() != ValueColumn) return f;
     const int group = decodeGroup(index.internalId());
-    const QString key = properties(group).value(property);
-    if (isBool(group, key)) return f | Qt::ItemIsUserCheckable;
-    if (group == Bodies && key == "mass" && scene_.bodies[decodeElement(index.internalId())].fixed) return f;
+    const Field field = fieldsOf(group).value(property);
+    if (isCheckBox(field)) return f | Qt::ItemIsUserCheckable;
+    if (field.key == K::BodyMass && scene_.bodies[decodeElement(index.internalId())].fixed) return f;
     return f | Qt::ItemIsEditable;
 }
 
@@ -249,7 +230,8 @@ QVariant SceneEditorModel::data(const QModelIndex& index, int role) const
         if (role == Qt::BackgroundRole && issues_.contains(path)) return QBrush(QColor(0xf9, 0xd6, 0xd5));
         return {};
     }
-    const QString key = properties(group).value(property);
+    const Field field = fieldsOf(group).value(property);
+    const QString key = fieldName(field);
     if (role == Qt::BackgroundRole) {
         for (auto it = issues_.begin(); it != issues_.end(); ++it) {
             if (it.key() == path || it.key().startsWith(path + '[') || it.key().startsWith(path + '.')) {
@@ -260,9 +242,8 @@ QVariant SceneEditorModel::data(const QModelIndex& index, int role) const
     }
     if (role == Qt::ToolTipRole) {
         QStringList lines;
-        const KeyInfo info = keyInfo().value(key, KeyInfo{"", ""});
-        if (index.column() == ValueColumn) lines << valueOf(group, element, key, Qt::DisplayRole).toString();
-        lines << QStringLiteral("%1: %2").arg(path, QString::fromUtf8(info.meaning));
+        if (index.column() == ValueColumn) lines << valueOf(group, element, field, Qt::DisplayRole).toString();
+        lines << QStringLiteral("%1: %2").arg(path, fieldMeaning(field));
         for (auto it = issues_.begin(); it != issues_.end(); ++it) {
             if (it.key() == path || it.key().startsWith(path + '[') || it.key().startsWith(path + '.')) {
                 lines << QStringLiteral("⚠ %1: %2").arg(it.key(), it.value());
@@ -272,11 +253,11 @@ QVariant SceneEditorModel::data(const QModelIndex& index, int role) const
     }
     if (index.column() == KeyColumn) {
         if (role != Qt::DisplayRole) return {};
-        const KeyInfo info = keyInfo().value(key, KeyInfo{"", ""});
-        return *info.unit ? QStringLiteral("%1 [%2]").arg(key, QString::fromUtf8(info.unit)) : key;
+        const QString unit = fieldUnit(field);
+        return unit.isEmpty() ? key : QStringLiteral("%1 [%2]").arg(key, unit);
     }
-    if (role == OptionsRole) return optionsOf(group, key);
-    return valueOf(group, element, key, role);
+    if (role == OptionsRole) return optionsOf(group, field);
+    return valueOf(group, element, field, role);
 }
 
 bool SceneEditorModel::setData(const QModelIndex& index, const QVariant& value, int role)
@@ -287,21 +268,23 @@ bool SceneEditorModel::setData(const QModelIndex& index, const QVariant& value, 
     const int element = decodeElement(id);
     const int property = decodeProperty(id);
     if (property < 0) return false;
-    const QString key = properties(group).value(property);
+    const Field field = fieldsOf(group).value(property);
     QVariant v = value;
-    if (isBool(group, key)) {
+    if (isCheckBox(field)) {
         if (role != Qt::CheckStateRole && role != Qt::EditRole) return false;
         v = role == Qt::CheckStateRole ? value.toInt() == Qt::Checked : value.toBool();
     } else if (role != Qt::EditRole) {
         return false;
     }
     QString error;
-    if (!setValue(group, element, key, v, &error)) {
+    if (!setValue(group, element, field, v, &error)) {
         emit editRefused(QStringLiteral("%1: %2").arg(pathOf(group, element, property), error));
         return false;
     }
     // A name or a reference changes the titles of other rows too: refresh the whole tree's text.
-    if (key == "name" || key == "body" || key.startsWith("bodies[") || key == "fixed") {
+    const sceneformat::KeyRow& row = sceneformat::row(field.key);
+    if (field.key == K::Name || field.key == K::BodyName || field.key == K::PlaneName || field.key == K::BodyFixed ||
+        row.type == sceneformat::Type::BodyRef || row.type == sceneformat::Type::NamePair) {
         refreshAll();
     } else {
         emit dataChanged(index.siblingAtColumn(KeyColumn), index.siblingAtColumn(ValueColumn));
@@ -316,9 +299,9 @@ QModelIndex SceneEditorModel::addElement(Group group)
     SceneDef& s = scene_;
     const std::string firstBody = s.bodies.empty() ? std::string() : s.bodies.front().name;
     const Vec3 firstPosition = s.bodies.empty() ? Vec3::Zero() : s.bodies.front().x0_W;
-    auto unique = [&](const QString& stem) {
+    auto unique = [&](const QString& pattern) {   // "body%1" -> body2, body3, ...
         for (int i = 2;; ++i) {
-            const std::string name = QStringLiteral("%1%2").arg(stem).arg(i).toStdString();
+            const std::string name = QString(pattern).arg(i).toStdString();
             if (s.bodyIndex(name) < 0 && s.planeIndex(name) < 0) return name;
         }
     };
@@ -326,7 +309,7 @@ QModelIndex SceneEditorModel::addElement(Group group)
     switch (group) {
     case Bodies: {
         BodyDef b;
-        b.name = unique(QStringLiteral("body"));
+        b.name = unique(QStringLiteral("body%1"));
         b.x0_W = Vec3(2.0 * static_cast<double>(s.bodies.size()), 0, 0);   // beside the others
         s.bodies.push_back(b);
         break;
@@ -334,7 +317,7 @@ QModelIndex SceneEditorModel::addElement(Group group)
     case Forces: s.forces.push_back(ForceDef{s.bodies.empty() ? -1 : 0, firstPosition, Vec3(1, 0, 0), 0, 1, firstBody}); break;
     case Torques: s.torques.push_back(TorqueDef{s.bodies.empty() ? -1 : 0, Vec3(0, 0, 1), 0, kForever, false, true, firstBody}); break;
     case Probes: s.probes.push_back(ProbeDef{s.bodies.empty() ? -1 : 0, firstPosition, firstBody}); break;
-    case Planes: s.planes.push_back(PlaneDef{unique(QStringLiteral("plane")), Vec3::Zero(), Vec3::UnitY()}); break;
+    case Planes: s.planes.push_back(PlaneDef{unique(QStringLiteral("plane%1")), Vec3::Zero(), Vec3::UnitY()}); break;
     case Pairs: {
         PairOverride p;
         p.bodyA = s.bodies.empty() ? -1 : 0;

@@ -24,6 +24,10 @@
 
 namespace rbw {
 
+namespace editorfields {
+struct Field;
+}
+
 class SceneEditorModel : public QAbstractItemModel {
     Q_OBJECT
 public:
@@ -73,13 +77,12 @@ private:
     // Row identity packed into the internal id: group, element + 1, property + 1.
     static quintptr pack(int group, int element, int property);
     int elementCount(int group) const;
-    QStringList properties(int group) const;
     QString pathOf(int group, int element, int property) const;
     QString elementTitle(int group, int element) const;
     // The values (scene_editor_values.cpp): a field as text, read back, its choices.
-    QVariant valueOf(int group, int element, const QString& key, int role) const;
-    QStringList optionsOf(int group, const QString& key) const;
-    bool setValue(int group, int element, const QString& key, const QVariant& value, QString* error);
+    QVariant valueOf(int group, int element, const editorfields::Field& field, int role) const;
+    QStringList optionsOf(int group, const editorfields::Field& field) const;
+    bool setValue(int group, int element, const editorfields::Field& field, const QVariant& value, QString* error);
     QStringList bodyNames() const;
     void refreshAll();
 
