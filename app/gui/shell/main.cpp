@@ -7,13 +7,13 @@
 // --version and --help print and exit before any window exists, so they need no display.
 #include "app/core/lesson_catalogue.h"
 #include "app/scene/scene_loader.h"
+#include "app/gui/shell/app_settings.h"
 #include "app/gui/shell/main_window.h"
 #include "app/gui/shell/performance_probe.h"
 #include "app/gui/panels/view/scene_view.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QSettings>
 #include <QSurfaceFormat>
 
 #include <cstdio>
@@ -120,7 +120,7 @@ int main(int argc, char* argv[])
     }
     if (!asked.file.isEmpty() && !window.openSceneFile(asked.file, &error)) return refuse(error.split('\n'));
     if (asked.lessonId.isEmpty() && asked.file.isEmpty() &&
-        !window.openLesson(QSettings().value("lesson/last", "01-one-step").toString())) {
+        !window.openLesson(rbw::AppSettings::lastLesson())) {
         window.openLesson("01-one-step");
     }
     if (parser.isSet("measure")) {

@@ -1,5 +1,7 @@
 #include "app/gui/shell/scene_files.h"
 
+#include "app/gui/shell/app_settings.h"
+
 #include <QCoreApplication>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -8,7 +10,6 @@
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QMimeData>
-#include <QSettings>
 #include <QTreeView>
 #include <QUrl>
 #include <QWidget>
@@ -17,7 +18,6 @@ namespace rbw {
 
 namespace {
 
-const QString kRecentKey = QStringLiteral("files/recent");
 const QString kFilter = QStringLiteral("Scene files (*.json);;All files (*)");
 
 // Qt's own dialog: a size where its detail columns (name, size, type, date) fit.
@@ -50,7 +50,7 @@ SceneFiles::SceneFiles(QWidget* window)
 QStringList SceneFiles::recentFiles() const
 {
     QStringList existing;
-    for (const QString& path : QSettings().value(kRecentKey).toStringList()) {
+    for (const QString& path : AppSettings::recentFiles()) {
         if (QFileInfo(path).isFile()) existing << path;
     }
     return existing;
@@ -59,17 +59,17 @@ QStringList SceneFiles::recentFiles() const
 void SceneFiles::addRecent(const QString& path)
 {
     const QString absolute = QFileInfo(path).absoluteFilePath();
-    QStringList list = QSettings().value(kRecentKey).toStringList();
+    QStringList list = AppSettings::recentFiles();
     list.removeAll(absolute);
     list.prepend(absolute);
     while (list.size() > kMaxRecent) list.removeLast();
-    QSettings().setValue(kRecentKey, list);
+    AppSettings::setRecentFiles(list);
     emit recentChanged();
 }
 
 void SceneFiles::clearRecent()
 {
-    QSettings().remove(kRecentKey);
+    AppSettings::setRecentFiles({});
     emit recentChanged();
 }
 

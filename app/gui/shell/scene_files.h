@@ -1,5 +1,5 @@
 // The scene files the student opens in the app, apart from the lessons: File → Open
-// (a Qt file dialog), the recent files (QSettings "files/recent"), a .json dropped on
+// (a Qt file dialog), the recent files (AppSettings::recentFiles), a .json dropped on
 // the window, and the watch on the open file, so that saving it in an editor reloads
 // it here. The window only wires these signals to its loading code.
 //

@@ -1,0 +1,77 @@
+#include "app/gui/shell/quantity_table_actions.h"
+
+#include "app/core/session.h"
+#include "app/gui/panels/plots/quantity_plot_panel.h"
+#include "app/gui/panels/quantities/code_view.h"
+#include "app/gui/panels/quantities/trace_model.h"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QDockWidget>
+#include <QStatusBar>
+#include <QTreeView>
+
+#include <cstring>
+
+namespace rbw {
+
+QuantityTableActions::QuantityTableActions(const Parts& parts, Session* session, QObject* parent)
+    : QObject(parent)
+    , p_(parts)
+    , session_(session)
+{
+}
+
+void QuantityTableActions::copySelection(bool asLatex)
+{
+    QStringList lines;
+    for (const QModelIndex& index : p_.table->selectionModel()->selectedRows()) {
+        if (p_.model->entryAt(index) == nullptr) continue;
+        lines << (asLatex ? p_.model->data(index, TraceModel::LatexRole).toString() : p_.model->rowText(index));
+    }
+    if (!lines.isEmpty()) QApplication::clipboard()->setText(lines.join('\n'));
+}
+
+bool QuantityTableActions::showCodeOfCurrentRow()
+{
+    QModelIndex index = p_.table->currentIndex();
+    if (p_.model->entryAt(index) == nullptr) {
+        const QModelIndexList selected = p_.table->selectionModel()->selectedRows();
+        index = selected.isEmpty() ? QModelIndex() : selected.first();
+    }
+    const QString file = index.data(TraceModel::SourceFileRole).toString();
+    if (p_.model->entryAt(index) == nullptr || file.isEmpty()) {
+        p_.status->showMessage(tr("Select a quantity in the table to see the code that computed it"), 3000);
+        return false;
+    }
+    const int line = index.data(TraceModel::SourceLineRole).toInt();
+    const bool shown = p_.codeView->showSource(file, line);
+    p_.codeDock->show();
+    p_.codeDock->raise();
+    if (!shown) p_.status->showMessage(p_.codeView->headerText(), 5000);
+    return shown;
+}
+
+bool QuantityTableActions::plotRowOverTime(const QModelIndex& row, bool norm)
+{
+    const TraceEntry* e = p_.model->entryAt(row);
+    if (e == nullptr || !session_->isLoaded()) {
+        p_.status->showMessage(tr("Right-click a quantity's row (not a group) to plot it over time"), 3000);
+        return false;
+    }
+    const SceneDef& scene = session_->world()->scene();
+    QString label = QString::fromUtf8(e->info->text);
+    if (e->index >= 0 && std::strcmp(indexKindName(e->info->indexKind), "") != 0) {
+        label += QStringLiteral(" %1 %2").arg(QString::fromLatin1(indexKindName(e->info->indexKind))).arg(e->index);
+    }
+    if (e->body >= 0 && e->body < static_cast<int>(scene.bodies.size())) {
+        label += QStringLiteral(" (%1)").arg(QString::fromStdString(scene.bodies[static_cast<std::size_t>(e->body)].name));
+    }
+    p_.plots->addQuantity(QuantityKey{QString::fromLatin1(e->info->id), e->body, e->index}, label,
+                          QString::fromUtf8(e->info->unit), session_->history(), norm, QString::fromUtf8(e->info->text));
+    p_.plotDock->show();
+    p_.plotDock->raise();
+    return true;
+}
+
+} // namespace rbw

@@ -1,0 +1,44 @@
+// What the quantities table's rows offer (its context menu and Edit menu): copy the
+// selected rows as text or LaTeX, show the physics statement that computed a row in
+// the code view, and plot a row's quantity over the recorded history.
+#pragma once
+
+#include <QObject>
+
+class QDockWidget;
+class QModelIndex;
+class QStatusBar;
+class QTreeView;
+
+namespace rbw {
+
+class CodeView;
+class QuantityPlotPanel;
+class Session;
+class TraceModel;
+
+class QuantityTableActions : public QObject {
+    Q_OBJECT
+public:
+    struct Parts {
+        QTreeView* table;
+        TraceModel* model;
+        CodeView* codeView;
+        QDockWidget* codeDock;
+        QuantityPlotPanel* plots;
+        QDockWidget* plotDock;
+        QStatusBar* status;
+    };
+    QuantityTableActions(const Parts& parts, Session* session, QObject* parent);
+
+    void copySelection(bool asLatex);
+    // False (with a note in the status bar) for a group row.
+    bool showCodeOfCurrentRow();
+    bool plotRowOverTime(const QModelIndex& row, bool norm);
+
+private:
+    Parts p_;
+    Session* session_;
+};
+
+} // namespace rbw
