@@ -80,7 +80,7 @@ void TestLessonTexts::lesson1TableIsOnTheRight()
 {
     const QString text = lessonText("01-one-step/lesson.md");
     QVERIFY(text.contains("quantities table on the right"));
-    QVERIFY(!text.contains("table above"));   // the table is a dock on the right (tst_student_tools)
+    QVERIFY(!text.contains("table above"));   // the table is a dock on the right (tst_window_controls)
 }
 
 // "q = (−0.25, 0.25, −0.2) in all 200 steps" although the lever arm changes; L after
