@@ -28,6 +28,7 @@ World::World(SceneDef scene, WorldOptions options)
         movable_.push_back(def.fixed ? 0 : 1);
     }
     loads_.assign(n, BodyLoad{});
+    contacts_ = ContactState(static_cast<int>(n));
     scratch_.loaded.assign(n, 0);
     scratch_.kineticBefore.assign(n, 0.0);
     scratch_.kineticBound.assign(n, 0.0);
@@ -106,8 +107,8 @@ Vec3 World::worldToBody(int body, const Vec3& p_W) const
 
 StepContext World::context(StepTrace* trace)
 {
-    return StepContext{scene_,         mass_,   conventions_, movable_,  probeOffsets_B_, onceForces_,
-                       torqueEnabled_, states_, loads_,       scratch_, trace,           stepIndex_, status_};
+    return StepContext{scene_,  mass_,  conventions_, movable_, probeOffsets_B_, onceForces_, torqueEnabled_,
+                       states_, loads_, contacts_,    scratch_, trace,           stepIndex_,  status_};
 }
 
 const StepStatus& World::step(StepTrace* trace)
@@ -189,7 +190,7 @@ Diagnostics World::diagnostics() const
 
 WorldSnapshot World::snapshot() const
 {
-    return WorldSnapshot{states_, torqueEnabled_, stepIndex_, time_, status_};
+    return WorldSnapshot{states_, torqueEnabled_, stepIndex_, time_, status_, contacts_};
 }
 
 void World::restore(const WorldSnapshot& s)
@@ -201,6 +202,13 @@ void World::restore(const WorldSnapshot& s)
     stepIndex_ = s.stepIndex;
     time_ = s.time;
     status_ = s.status;
+    // A snapshot of another scene, or a default-constructed one, has no contact state for
+    // these bodies: the world's is then a fresh world's.
+    if (s.contacts.sleep.bodyCount() == static_cast<int>(scene_.bodies.size())) {
+        contacts_ = s.contacts;
+    } else {
+        contacts_ = ContactState(static_cast<int>(scene_.bodies.size()));
+    }
     onceForces_.clear();
 }
 

@@ -16,6 +16,7 @@
 #include "physics/engine/collision/contact.h"
 #include "physics/engine/diagnostics.h"
 #include "physics/engine/integrator.h"
+#include "physics/engine/manifold/contact_state.h"
 #include "physics/engine/scene.h"
 #include "physics/engine/stages/pipeline_builder.h"
 #include "physics/engine/stages/probes_stage.h"
@@ -28,13 +29,24 @@
 
 namespace rbw {
 
-// Everything needed to put a world back exactly as it was (history, step back).
+// Everything needed to put a world back exactly as it was (history, step back): all
+// that changes from step to step. A world restored from it, the same one or a fresh
+// one of the same scene, steps on bit for bit (tst_snapshot). The stages keep nothing
+// between steps themselves.
 struct WorldSnapshot {
     std::vector<BodyState> states;
     std::vector<char> torqueEnabled;   // switchable torques' on/off state
     long stepIndex = 0;
     double time = 0.0;
     StepStatus status;
+    ContactState contacts;             // the manifold model's warm-start impulses and sleep state
+
+    // The heap bytes it holds beside sizeof(WorldSnapshot): what the history's memory
+    // budget counts for a kept state.
+    std::size_t bytes() const
+    {
+        return states.capacity() * sizeof(BodyState) + torqueEnabled.capacity() + contacts.bytes();
+    }
 };
 
 class World {
@@ -92,7 +104,12 @@ public:
     ProbeReading probe(int i) const;
 
     WorldSnapshot snapshot() const;
+    // Puts the world back as it was when `s` was taken (a snapshot of a world of the
+    // same scene): the bodies, the switches, the step and time, the status and the
+    // contact model's state. The one-step forces not yet applied are dropped.
     void restore(const WorldSnapshot& s);
+    // The manifold model's state carried between steps (contact_state.h).
+    const ContactState& contactState() const { return contacts_; }
 
     // The stages a step runs, decided once when the world is built (see the top).
     const std::vector<PipelineEntry>& pipeline() const { return pipeline_; }
@@ -124,6 +141,7 @@ private:
     std::vector<BodyLoad> loads_;
     std::vector<ForceDef> onceForces_;
     std::vector<char> torqueEnabled_;
+    ContactState contacts_;
     StepScratch scratch_;
     long stepIndex_ = 0;
     double time_ = 0.0;

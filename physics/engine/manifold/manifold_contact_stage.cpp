@@ -11,61 +11,56 @@ namespace rbw {
 
 namespace {
 
-bool awakeMovable(const StepContext& ctx, const ContactWorld& w, int b)
+bool awakeMovable(const StepContext& ctx, int b)
 {
-    return ctx.movable[static_cast<std::size_t>(b)] && !w.sleep.asleep(b);
+    return ctx.movable[static_cast<std::size_t>(b)] && !ctx.contacts.sleep.asleep(b);
 }
 
-bool sleepingBody(const StepContext& ctx, const ContactWorld& w, int b)
+bool sleepingBody(const StepContext& ctx, int b)
 {
-    return ctx.movable[static_cast<std::size_t>(b)] && w.sleep.asleep(b);
+    return ctx.movable[static_cast<std::size_t>(b)] && ctx.contacts.sleep.asleep(b);
 }
 
 } // namespace
 
 void ManifoldContactStage::run(StepContext& ctx)
 {
-    ContactWorld& w = *world_;
-    const int n = static_cast<int>(ctx.states.size());
-    if (static_cast<int>(w.bodies.size()) != n + 1) {
-        w.bodies.assign(static_cast<std::size_t>(n + 1), SolverBody{});
-        w.sleep.resize(n);
-        w.cache.clear();
-    }
+    ContactScratch& w = *world_;
+    // What this step starts from beside the bodies (the warm-start impulses, who sleeps)
+    // is the world's state, ctx.contacts: nothing here depends on earlier steps.
     if (w.settings.sleep) wakeLoadedBodies(ctx);
     findManifolds(ctx);
     solve(ctx);
     if (ctx.trace != nullptr) recordPoints(ctx);
     // Keep the impulses of this step's manifolds, and of the sleeping pairs not solved.
-    w.cache.store(w.manifolds, [&ctx, &w](std::uint64_t key) {
+    ctx.contacts.cache.store(w.manifolds, [&ctx](std::uint64_t key) {
         const int a = static_cast<int>(key >> 32);
         const std::uint64_t low = key & 0xffffffffu;
         const int b = low >= (std::uint64_t{1} << 31) ? -1 : static_cast<int>(low);
         if (a >= static_cast<int>(ctx.states.size()) || b >= static_cast<int>(ctx.states.size())) return false;
-        const bool sleepingA = sleepingBody(ctx, w, a);
-        return sleepingA && (b < 0 || !awakeMovable(ctx, w, b));
-    });
+        const bool sleepingA = sleepingBody(ctx, a);
+        return sleepingA && (b < 0 || !awakeMovable(ctx, b));
+    }, w.cacheSpare);
 }
 
 void ManifoldContactStage::wakeLoadedBodies(StepContext& ctx)
 {
-    ContactWorld& w = *world_;
     for (int b = 0; b < static_cast<int>(ctx.states.size()); ++b) {
-        if (!sleepingBody(ctx, w, b)) continue;
+        if (!sleepingBody(ctx, b)) continue;
         const BodyState& s = ctx.states[static_cast<std::size_t>(b)];
         // A sleeping body has v = L = 0 and no load but its weight M g; anything else
         // (a drag, a push, a force of the scene, a restored moving state) wakes it.
         const Vec3 weight_W = ctx.mass[static_cast<std::size_t>(b)].M * ctx.scene.g_W;
         const BodyLoad& load = ctx.loads[static_cast<std::size_t>(b)];
         if (s.v_W != Vec3::Zero() || s.L_W != Vec3::Zero() || load.F_W != weight_W || load.q_W != Vec3::Zero()) {
-            w.sleep.wake(b);
+            ctx.contacts.sleep.wake(b);
         }
     }
 }
 
 bool ManifoldContactStage::collidePair(StepContext& ctx, int a, int b)
 {
-    ContactWorld& w = *world_;
+    ContactScratch& w = *world_;
     Manifold& m = w.manifolds.emplace_back();
     if (!collideBoxBoxManifold(poseOf(ctx, a), poseOf(ctx, b), w.settings.margin, m, w.settings.maxPoints)) {
         w.manifolds.pop_back();
@@ -76,13 +71,13 @@ bool ManifoldContactStage::collidePair(StepContext& ctx, int a, int b)
     m.plane = -1;
     m.mu = ctx.scene.frictionFor(a, b, -1);
     m.restitution = ctx.scene.restitutionFor(a, b, -1);
-    w.cache.warmStart(m);
+    ctx.contacts.cache.warmStart(m);
     return true;
 }
 
 void ManifoldContactStage::findManifolds(StepContext& ctx)
 {
-    ContactWorld& w = *world_;
+    ContactScratch& w = *world_;
     const int n = static_cast<int>(ctx.states.size());
     const double margin = w.settings.margin;
     w.manifolds.clear();
@@ -108,12 +103,12 @@ void ManifoldContactStage::findManifolds(StepContext& ctx)
             for (std::size_t i = 0; i < w.pairs.size(); ++i) {
                 if (w.pairDone[i]) continue;
                 const auto [a, b] = w.pairs[i];
-                const bool wakesB = awakeMovable(ctx, w, a) && sleepingBody(ctx, w, b);
-                const bool wakesA = awakeMovable(ctx, w, b) && sleepingBody(ctx, w, a);
+                const bool wakesB = awakeMovable(ctx, a) && sleepingBody(ctx, b);
+                const bool wakesA = awakeMovable(ctx, b) && sleepingBody(ctx, a);
                 if (!wakesA && !wakesB) continue;
                 w.pairDone[i] = 1;
                 if (collidePair(ctx, a, b)) {
-                    w.sleep.wake(wakesB ? b : a);
+                    ctx.contacts.sleep.wake(wakesB ? b : a);
                     woke = true;
                 }
             }
@@ -123,13 +118,13 @@ void ManifoldContactStage::findManifolds(StepContext& ctx)
         for (std::size_t i = 0; i < w.pairs.size(); ++i) {
             if (w.pairDone[i]) continue;
             const auto [a, b] = w.pairs[i];
-            if (awakeMovable(ctx, w, a) || awakeMovable(ctx, w, b)) collidePair(ctx, a, b);
+            if (awakeMovable(ctx, a) || awakeMovable(ctx, b)) collidePair(ctx, a, b);
         }
     }
     if (planes_) {
         for (int p = 0; p < static_cast<int>(ctx.scene.planes.size()); ++p) {
             for (int b = 0; b < n; ++b) {
-                if (!awakeMovable(ctx, w, b)) continue;
+                if (!awakeMovable(ctx, b)) continue;
                 Manifold& m = w.manifolds.emplace_back();
                 if (!collideBoxPlaneManifold(poseOf(ctx, b), ctx.scene.planes[static_cast<std::size_t>(p)], margin, m)) {
                     w.manifolds.pop_back();
@@ -140,7 +135,7 @@ void ManifoldContactStage::findManifolds(StepContext& ctx)
                 m.plane = p;
                 m.mu = ctx.scene.frictionFor(b, -1, p);
                 m.restitution = ctx.scene.restitutionFor(b, -1, p);
-                w.cache.warmStart(m);
+                ctx.contacts.cache.warmStart(m);
             }
         }
     }
@@ -148,13 +143,14 @@ void ManifoldContactStage::findManifolds(StepContext& ctx)
 
 void ManifoldContactStage::solve(StepContext& ctx)
 {
-    ContactWorld& w = *world_;
+    ContactScratch& w = *world_;
     const int n = static_cast<int>(ctx.states.size());
     const double h = ctx.scene.dt;
+    w.bodies.resize(static_cast<std::size_t>(n + 1));   // every entry is set below
     for (int b = 0; b <= n; ++b) {
         SolverBody& sb = w.bodies[static_cast<std::size_t>(b)];
         sb = SolverBody{};
-        if (b == n || !awakeMovable(ctx, w, b)) continue;   // static: fixed, asleep, the planes' body
+        if (b == n || !awakeMovable(ctx, b)) continue;   // static: fixed, asleep, the planes' body
         const BodyState& s = ctx.states[static_cast<std::size_t>(b)];
         const MassProperties& mp = ctx.mass[static_cast<std::size_t>(b)];
         const BodyLoad& load = ctx.loads[static_cast<std::size_t>(b)];
@@ -181,7 +177,7 @@ void ManifoldContactStage::solve(StepContext& ctx)
     for (int b = 0; b < n; ++b) {
         if (!ctx.movable[static_cast<std::size_t>(b)]) continue;
         BodyLoad& load = ctx.loads[static_cast<std::size_t>(b)];
-        if (w.sleep.asleep(b)) {
+        if (ctx.contacts.sleep.asleep(b)) {
             // Asleep: the support cancels every load, F_c = -F, q_c = -q.
             const Vec3 F_c = -load.F_W;
             record(ctx.trace, q::sleep_contact_force, b, F_c);
@@ -209,7 +205,7 @@ void ManifoldContactStage::solve(StepContext& ctx)
 
 void ManifoldContactStage::recordPoints(StepContext& ctx) const
 {
-    const ContactWorld& w = *world_;
+    const ContactScratch& w = *world_;
     int points = 0;
     for (const Manifold& m : w.manifolds) {
         for (int k = 0; k < m.count; ++k) {

@@ -7,7 +7,7 @@
 // F_c = P/h, q_c = L_c/h, and a sleeping body gets F_c = -F, q_c = -q, so it stays put.
 #pragma once
 
-#include "physics/engine/manifold/contact_world.h"
+#include "physics/engine/manifold/contact_scratch.h"
 #include "physics/engine/stages/stage.h"
 
 #include <memory>
@@ -17,7 +17,7 @@ namespace rbw {
 class ManifoldContactStage final : public PipelineStep {
 public:
     // boxPairs: box-box manifolds (box_collisions); planes: box-plane manifolds.
-    ManifoldContactStage(std::shared_ptr<ContactWorld> world, bool boxPairs, bool planes)
+    ManifoldContactStage(std::shared_ptr<ContactScratch> world, bool boxPairs, bool planes)
         : world_(std::move(world)), boxPairs_(boxPairs), planes_(planes)
     {
     }
@@ -31,7 +31,7 @@ private:
     void solve(StepContext& ctx);
     void recordPoints(StepContext& ctx) const;
 
-    std::shared_ptr<ContactWorld> world_;
+    std::shared_ptr<ContactScratch> world_;
     bool boxPairs_;
     bool planes_;
 };

@@ -23,7 +23,7 @@ double deepestOverlap(const std::vector<Manifold>& manifolds, const std::vector<
 
 void ManifoldPositionStage::run(StepContext& ctx)
 {
-    ContactWorld& w = *world_;
+    ContactScratch& w = *world_;
     const int n = static_cast<int>(ctx.states.size());
     if (w.settings.positionFix == PositionFix::Ngs && !w.manifolds.empty()) {
         dx_W_.assign(static_cast<std::size_t>(n), Vec3::Zero());

@@ -7,7 +7,7 @@
 // trace it records each moved body's total correction and the deepest overlap left.
 #pragma once
 
-#include "physics/engine/manifold/contact_world.h"
+#include "physics/engine/manifold/contact_scratch.h"
 #include "physics/engine/manifold/position_fix.h"
 #include "physics/engine/stages/stage.h"
 
@@ -17,12 +17,12 @@ namespace rbw {
 
 class ManifoldPositionStage final : public PipelineStep {
 public:
-    explicit ManifoldPositionStage(std::shared_ptr<ContactWorld> world) : world_(std::move(world)) {}
+    explicit ManifoldPositionStage(std::shared_ptr<ContactScratch> world) : world_(std::move(world)) {}
     PipelineStage kind() const override { return PipelineStage::ManifoldPositions; }
     void run(StepContext& ctx) override;
 
 private:
-    std::shared_ptr<ContactWorld> world_;
+    std::shared_ptr<ContactScratch> world_;
     NgsSolver ngs_;               // this step's manifolds as the iterations read them
     std::vector<Vec3> dx_W_;      // per body: its correction in this step
     std::vector<char> moved_;     // per body: corrected in this step

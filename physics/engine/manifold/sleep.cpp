@@ -9,7 +9,6 @@ void SleepState::resize(int bodies)
     restTime_.assign(static_cast<std::size_t>(bodies), 0.0);
     island_.assign(static_cast<std::size_t>(bodies), -1);
     members_.clear();
-    parent_.assign(static_cast<std::size_t>(bodies), 0);
 }
 
 void SleepState::reset()
@@ -33,24 +32,40 @@ void SleepState::wake(int b)
     members_[static_cast<std::size_t>(id)].clear();
 }
 
-int SleepState::find(int b)
+std::size_t SleepState::bytes() const
+{
+    std::size_t n = restTime_.capacity() * sizeof(double) + island_.capacity() * sizeof(int) +
+                    members_.capacity() * sizeof(std::vector<int>);
+    for (const std::vector<int>& m : members_) n += m.capacity() * sizeof(int);
+    return n;
+}
+
+namespace {
+
+int rootOf(std::vector<int>& parent, int b)
 {
     // Union-find with path halving.
-    while (parent_[static_cast<std::size_t>(b)] != b) {
-        parent_[static_cast<std::size_t>(b)] = parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(b)])];
-        b = parent_[static_cast<std::size_t>(b)];
+    while (parent[static_cast<std::size_t>(b)] != b) {
+        parent[static_cast<std::size_t>(b)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(b)])];
+        b = parent[static_cast<std::size_t>(b)];
     }
     return b;
 }
 
+} // namespace
+
 void SleepState::update(std::vector<BodyState>& states, const std::vector<char>& movable,
-                        const std::vector<Manifold>& manifolds, double h, const ManifoldSettings& settings)
+                        const std::vector<Manifold>& manifolds, double h, const ManifoldSettings& settings,
+                        SleepScratch& scratch)
 {
     const int n = static_cast<int>(states.size());
+    std::vector<int>& parent = scratch.parent;
+    parent.resize(static_cast<std::size_t>(n));
+    const auto find = [&parent](int b) { return rootOf(parent, b); };
     const double lin2 = settings.sleepLinear * settings.sleepLinear;
     const double ang2 = settings.sleepAngular * settings.sleepAngular;
     for (int b = 0; b < n; ++b) {
-        parent_[static_cast<std::size_t>(b)] = b;
+        parent[static_cast<std::size_t>(b)] = b;
         if (!movable[static_cast<std::size_t>(b)] || asleep(b)) continue;
         const BodyState& s = states[static_cast<std::size_t>(b)];
         // t_rest <- t_rest + h if |v| <= v_sleep and |omega| <= omega_sleep, else 0
@@ -64,17 +79,17 @@ void SleepState::update(std::vector<BodyState>& states, const std::vector<char>&
         if (asleep(m.a) || asleep(m.b)) continue;
         const int ra = find(m.a);
         const int rb = find(m.b);
-        if (ra != rb) parent_[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
+        if (ra != rb) parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
     }
     // The least rest time of each island, kept at its root.
-    std::vector<double>& least = least_;
+    std::vector<double>& least = scratch.least;
     least.assign(static_cast<std::size_t>(n), 1e300);
     for (int b = 0; b < n; ++b) {
         if (!movable[static_cast<std::size_t>(b)] || asleep(b)) continue;
         double& l = least[static_cast<std::size_t>(find(b))];
         l = std::min(l, restTime_[static_cast<std::size_t>(b)]);
     }
-    std::vector<int>& idOfRoot = idOfRoot_;
+    std::vector<int>& idOfRoot = scratch.idOfRoot;
     idOfRoot.assign(static_cast<std::size_t>(n), -1);
     for (int b = 0; b < n; ++b) {
         if (!movable[static_cast<std::size_t>(b)] || asleep(b)) continue;

@@ -6,6 +6,10 @@
 // whole when an awake movable body touches one of its bodies, when a load other than
 // gravity acts on one of them, or when one of them is found moving (a restored state).
 //
+// SleepState is part of the world's state (ContactState, WorldSnapshot::contacts): a
+// restored snapshot restores who sleeps and for how long each body has rested. What
+// update() only needs while it runs is in SleepScratch, outside the state.
+//
 // Glossary
 //   restTime   how long the body has been slower than the tolerances              [s]
 //   island     per sleeping body: the id of the island it fell asleep with; -1 awake [-]
@@ -18,6 +22,13 @@
 #include <vector>
 
 namespace rbw {
+
+// What SleepState::update() works in; nothing in it outlives the call.
+struct SleepScratch {
+    std::vector<int> parent;       // union-find
+    std::vector<double> least;     // least rest time per root
+    std::vector<int> idOfRoot;     // island id per root
+};
 
 class SleepState {
 public:
@@ -33,19 +44,20 @@ public:
     // islands from the manifolds with points (between two movable bodies) and puts every
     // island whose bodies all rested timeToSleep to sleep (v = L = omega = 0).
     void update(std::vector<BodyState>& states, const std::vector<char>& movable,
-                const std::vector<Manifold>& manifolds, double h, const ManifoldSettings& settings);
+                const std::vector<Manifold>& manifolds, double h, const ManifoldSettings& settings,
+                SleepScratch& scratch);
 
     // Forgets everything: every body awake, rest times 0.
     void reset();
 
+    int bodyCount() const { return static_cast<int>(restTime_.size()); }
+    // The heap bytes it holds (the history's memory budget).
+    std::size_t bytes() const;
+
 private:
-    int find(int b);
     std::vector<double> restTime_;
     std::vector<int> island_;                 // per body: sleeping island id, -1 awake
     std::vector<std::vector<int>> members_;   // per island id: its bodies (empty: free id)
-    std::vector<int> parent_;                 // union-find scratch
-    std::vector<double> least_;               // update() scratch: least rest time per root
-    std::vector<int> idOfRoot_;               // update() scratch: island id per root
 };
 
 } // namespace rbw

@@ -4,7 +4,7 @@
 // and whether it sleeps.
 #pragma once
 
-#include "physics/engine/manifold/contact_world.h"
+#include "physics/engine/manifold/contact_scratch.h"
 #include "physics/engine/stages/stage.h"
 
 #include <memory>
@@ -13,12 +13,12 @@ namespace rbw {
 
 class SleepStage final : public PipelineStep {
 public:
-    explicit SleepStage(std::shared_ptr<ContactWorld> world) : world_(std::move(world)) {}
+    explicit SleepStage(std::shared_ptr<ContactScratch> world) : world_(std::move(world)) {}
     PipelineStage kind() const override { return PipelineStage::Sleep; }
     void run(StepContext& ctx) override;
 
 private:
-    std::shared_ptr<ContactWorld> world_;
+    std::shared_ptr<ContactScratch> world_;
 };
 
 } // namespace rbw

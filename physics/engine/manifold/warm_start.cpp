@@ -10,18 +10,21 @@ void ManifoldCache::clear()
     points_.clear();
 }
 
-void ManifoldCache::store(const std::vector<Manifold>& manifolds, const std::function<bool(std::uint64_t)>& keepOld)
+void ManifoldCache::store(const std::vector<Manifold>& manifolds, const std::function<bool(std::uint64_t)>& keepOld,
+                          ManifoldCache& spare)
 {
     // The kept entries first, with their points, from the old arrays.
-    keptEntries_.clear();
-    keptPoints_.clear();
+    std::vector<Entry>& keptEntries = spare.entries_;
+    std::vector<Point>& keptPoints = spare.points_;
+    keptEntries.clear();
+    keptPoints.clear();
     for (const Entry& e : entries_) {
         if (!keepOld(e.key)) continue;
-        keptEntries_.push_back(Entry{e.key, static_cast<int>(keptPoints_.size()), e.count});
-        keptPoints_.insert(keptPoints_.end(), points_.begin() + e.first, points_.begin() + e.first + e.count);
+        keptEntries.push_back(Entry{e.key, static_cast<int>(keptPoints.size()), e.count});
+        keptPoints.insert(keptPoints.end(), points_.begin() + e.first, points_.begin() + e.first + e.count);
     }
-    entries_.swap(keptEntries_);
-    points_.swap(keptPoints_);
+    entries_.swap(keptEntries);
+    points_.swap(keptPoints);
     for (const Manifold& m : manifolds) {
         if (m.count == 0) continue;
         entries_.push_back(Entry{m.key(), static_cast<int>(points_.size()), m.count});

@@ -4,6 +4,9 @@
 // rest then starts each step with the impulses that held it in the last one, and the
 // iterations only have to correct the change.
 //
+// The cache is part of the world's state (ContactState, WorldSnapshot::contacts): a
+// restored snapshot warm-starts its next step exactly as the first run did.
+//
 // Glossary
 //   key            the pair's manifold key (manifold.h)                           [-]
 //   feature        a point's feature id                                           [-]
@@ -24,8 +27,13 @@ class ManifoldCache {
 public:
     // Replaces the stored impulses by those of `manifolds` (any order), keeping the
     // stored pairs for which keepOld(key) is true (sleeping pairs, not solved this step).
-    void store(const std::vector<Manifold>& manifolds, const std::function<bool(std::uint64_t)>& keepOld);
+    // The new contents are built in `spare` and swapped in, so `spare` (scratch, not
+    // state) ends up holding the old ones and its storage is reused next time.
+    void store(const std::vector<Manifold>& manifolds, const std::function<bool(std::uint64_t)>& keepOld,
+               ManifoldCache& spare);
     void clear();
+    // The heap bytes it holds (the history's memory budget).
+    std::size_t bytes() const { return entries_.capacity() * sizeof(Entry) + points_.capacity() * sizeof(Point); }
 
     // Sets warm_n, warm_t_W, matched and the starting lambda_n, lambda_t1, lambda_t2 of
     // each of m's points: from the stored point of the same pair with the same feature
@@ -53,8 +61,6 @@ private:
     };
     std::vector<Entry> entries_;   // sorted by key
     std::vector<Point> points_;
-    std::vector<Entry> keptEntries_;   // scratch of store()
-    std::vector<Point> keptPoints_;
 };
 
 } // namespace rbw

@@ -111,10 +111,10 @@ std::vector<PipelineEntry> buildPipeline(const SceneDef& scene, const std::vecto
     // as loads, and fixes positions after it; the course model answers contacts after
     // the integration, one impulse at a time.
     const bool manifold = scene.contactModel == ContactModel::Manifold && (boxPairs || planeTests);
-    std::shared_ptr<ContactWorld> contactWorld;
+    std::shared_ptr<ContactScratch> contactScratch;
     if (manifold) {
-        contactWorld = std::make_shared<ContactWorld>();
-        contactWorld->settings = manifoldSettings(scene);
+        contactScratch = std::make_shared<ContactScratch>();
+        contactScratch->settings = manifoldSettings(scene);
     }
 
     std::vector<PipelineEntry> out;
@@ -123,7 +123,7 @@ std::vector<PipelineEntry> buildPipeline(const SceneDef& scene, const std::vecto
     add(std::make_unique<LoadsStage>(gravity));
     // After the loads (the solver works on v + h F/M) and before the energy bound, which
     // then counts the contact loads among the step's loads.
-    if (manifold) add(std::make_unique<ManifoldContactStage>(contactWorld, boxPairs, planeTests));
+    if (manifold) add(std::make_unique<ManifoldContactStage>(contactScratch, boxPairs, planeTests));
     if (energyCheck) add(std::make_unique<EnergyBoundStage>(mass));
     // One integration per integrator group that has a movable body.
     for (int g = 0; g < static_cast<int>(groups.names.size()); ++g) {
@@ -143,8 +143,8 @@ std::vector<PipelineEntry> buildPipeline(const SceneDef& scene, const std::vecto
     add(std::make_unique<FiniteCheckStage>());
     if (energyCheck) add(std::make_unique<EnergyCheckStage>());
     if (manifold) {
-        add(std::make_unique<ManifoldPositionStage>(contactWorld));
-        if (contactWorld->settings.sleep) add(std::make_unique<SleepStage>(contactWorld));
+        add(std::make_unique<ManifoldPositionStage>(contactScratch));
+        if (contactScratch->settings.sleep) add(std::make_unique<SleepStage>(contactScratch));
         add(std::make_unique<FiniteCheckStage>());
     } else {
         if (boxPairs) add(std::make_unique<BoxBoxStage>());

@@ -13,6 +13,7 @@
 #include "physics/engine/body.h"
 #include "physics/engine/collision/broad_phase.h"
 #include "physics/engine/integrator.h"
+#include "physics/engine/manifold/contact_state.h"
 #include "physics/engine/scene.h"
 #include "physics/engine/step_status.h"
 #include "physics/engine/trace.h"
@@ -72,6 +73,7 @@ struct StepContext {
     const std::vector<char>& torqueEnabled;              // per couple
     std::vector<BodyState>& states;
     std::vector<BodyLoad>& loads;
+    ContactState& contacts;   // the manifold model's state carried between steps (contact_state.h)
     StepScratch& scratch;
     StepTrace* trace;    // nullptr: record nothing
     long k;              // this step advances t_k = k h to t_{k+1}

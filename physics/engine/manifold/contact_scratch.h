@@ -1,8 +1,10 @@
-// What the manifold model keeps between its stages and between steps: the settings,
-// this step's manifolds, last step's impulses (warm starting), the sleep state, the
-// solver's bodies and the broad phase's scratch. The world's pipeline builder creates
-// one and hands it to the three stages (stages/manifold_contact_stage.h,
-// manifold_position_stage.h, sleep_stage.h).
+// What the manifold model's stages hand on to each other within one step: the settings,
+// this step's manifolds, the solver's bodies and rows, the broad phase's and the
+// sleep update's scratch. The world's pipeline builder creates one and hands it to the
+// three stages (manifold_contact_stage.h, manifold_position_stage.h, sleep_stage.h).
+// Every step rebuilds what it reads from here before reading it: nothing in it carries
+// over to the next step. What does carry over (the warm-start impulses, the sleep
+// state) is the world's state, ContactState (contact_state.h), in WorldSnapshot.
 #pragma once
 
 #include "physics/engine/collision/broad_phase.h"
@@ -17,11 +19,11 @@
 
 namespace rbw {
 
-struct ContactWorld {
-    ManifoldSettings settings;
+struct ContactScratch {
+    ManifoldSettings settings;         // the scene's, fixed when the world is built
     std::vector<Manifold> manifolds;   // this step's, solved (sleeping pairs are not listed)
-    ManifoldCache cache;               // last step's impulses by pair and feature id
-    SleepState sleep;
+    ManifoldCache cacheSpare;          // ManifoldCache::store's spare storage
+    SleepScratch sleepScratch;         // SleepState::update's
     std::vector<SolverBody> bodies;    // one per body, and a last, static one for planes
     ContactSolver solver;              // this step's rows, impulses and iteration history
     int iterationsUsed = 0;            // velocity iterations of the last step
