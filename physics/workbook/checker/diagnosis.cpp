@@ -45,12 +45,36 @@ using ModelValue = std::function<bool(Mistake, int variant, const std::string& i
 
 struct Candidate {
     const MistakeInfo* info;
-    std::vector<std::string> reasons;
+    std::vector<std::string> notGiven;    // wrong answers of the student it does not give
+    std::vector<std::string> unwritten;   // quantities it changes that the student did not write
 };
 
-bool holds(std::vector<std::string>& list, const std::string& s)
+void addOnce(std::vector<std::string>& list, const std::string& s)
 {
-    return std::find(list.begin(), list.end(), s) != list.end();
+    if (std::find(list.begin(), list.end(), s) == list.end()) list.push_back(s);
+}
+
+// "a", "a and b", "a, b and c"
+std::string listed(const std::vector<std::string>& names)
+{
+    std::string s;
+    for (size_t i = 0; i < names.size(); ++i) {
+        s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    }
+    return s;
+}
+
+std::string reasonOf(const Candidate& c, bool several)
+{
+    std::vector<std::string> parts;
+    if (several) parts.push_back("several mistakes give this number");
+    if (!c.notGiven.empty()) parts.push_back("it does not give your " + listed(c.notGiven));
+    if (!c.unwritten.empty()) {
+        parts.push_back("it fits only through " + listed(c.unwritten) + ", which you did not write");
+    }
+    std::string s;
+    for (const std::string& p : parts) s += (s.empty() ? "" : "; ") + p;
+    return s;
 }
 
 } // namespace
@@ -115,7 +139,7 @@ Diagnosis diagnose(const World& w, const StepTrace& t, const std::vector<Answer>
         for (int variant = 0; variant < m.variants; ++variant) {
             Values mine;
             if (!value(m.mistake, variant, a.quantity, a.index, mine) || !matches(a.value, mine, rel)) continue;
-            Candidate c{&m, {}};
+            Candidate c{&m, {}, {}};
             bool contradicted = false;
             const auto changes = [&](const std::string& id, int index) {
                 Values wrong, right;
@@ -134,8 +158,7 @@ Diagnosis diagnose(const World& w, const StepTrace& t, const std::vector<Answer>
                 if (right && changes(g.quantity, g.index)) {
                     contradicted = true;   // "your q is right": the file contradicts the model
                 } else if (!right && !matches(g.value, theirs, rel)) {
-                    const std::string why = "it does not give your " + g.quantity;
-                    if (!holds(c.reasons, why)) c.reasons.push_back(why);
+                    addOnce(c.notGiven, g.quantity);
                 }
             }
             if (contradicted) continue;
@@ -150,8 +173,7 @@ Diagnosis diagnose(const World& w, const StepTrace& t, const std::vector<Answer>
                     return sameSubject(g) && g.quantity == id;
                 });
                 if (!written && changes(id, index)) {
-                    const std::string why = "it fits only through " + id + ", which you did not write";
-                    if (!holds(c.reasons, why)) c.reasons.push_back(why);
+                    addOnce(c.unwritten, id);
                 }
             }
             const bool seen = std::any_of(candidates.begin(), candidates.end(),
@@ -160,15 +182,11 @@ Diagnosis diagnose(const World& w, const StepTrace& t, const std::vector<Answer>
             break;
         }
     }
-    if (candidates.size() == 1 && candidates.front().reasons.empty()) {
+    if (candidates.size() == 1 && candidates.front().notGiven.empty() && candidates.front().unwritten.empty()) {
         d.mistakes.push_back(candidates.front().info->id);
         return d;
     }
-    for (Candidate& c : candidates) {
-        std::string reason = candidates.size() > 1 ? "several mistakes give this number" : std::string();
-        for (const std::string& r : c.reasons) reason += (reason.empty() ? "" : "; ") + r;
-        d.possible.push_back(PossibleMistake{c.info->id, reason});
-    }
+    for (const Candidate& c : candidates) d.possible.push_back(PossibleMistake{c.info->id, reasonOf(c, candidates.size() > 1)});
     return d;
 }
 
