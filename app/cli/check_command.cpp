@@ -1,5 +1,6 @@
 #include "app/cli/check_command.h"
 
+#include "app/cli/standard_output.h"
 #include "app/exercise/answers_file.h"
 #include "app/scene/scene_loader.h"
 #include "physics/workbook/checker/checker.h"
@@ -58,9 +59,12 @@ QJsonValue jsonNumbers(const std::vector<double>& v)
     return a;
 }
 
+// RFC 4180: a field with a comma, a quote or a line break is quoted, quotes doubled
+// (a body or file name may hold any of them).
 QString csvField(QString s)
 {
-    if (s.contains(QLatin1Char(',')) || s.contains(QLatin1Char('"'))) {
+    if (s.contains(QLatin1Char(',')) || s.contains(QLatin1Char('"')) || s.contains(QLatin1Char('\n')) ||
+        s.contains(QLatin1Char('\r'))) {
         s.replace(QLatin1Char('"'), QStringLiteral("\"\""));
         return QLatin1Char('"') + s + QLatin1Char('"');
     }
@@ -134,7 +138,7 @@ int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, 
     }
 
     bool allCorrect = true;
-    QTextStream out(stdout);
+    QTextStream& out = cli::out();   // checked by main() (cli::finishStandardOutput)
     auto who = [&](const Answer& a) {
         QString s = a.contact >= 0 ? QStringLiteral("contact %1").arg(a.contact)
                                    : QString::fromStdString(scene.bodies[a.body].name);

@@ -1,5 +1,7 @@
 #include "app/cli/contact_study_command.h"
 
+#include "app/cli/output_options.h"
+#include "app/cli/standard_output.h"
 #include "app/exercise/answer_parser.h"
 #include "app/output/atomic_file.h"
 #include "app/output/study_csv.h"
@@ -7,7 +9,6 @@
 
 #include <QTextStream>
 
-#include <cstdio>
 
 namespace rbw {
 
@@ -77,9 +78,18 @@ int runContactStudyCommand(const QCommandLineParser& parser, const QString& prob
         if (!ok) return fail(QStringLiteral("--t-end: must be a finite number > 0, got \"%1\"").arg(parser.value("t-end")));
     }
     if (parser.isSet("boxes")) {
+        if (config.problem != lab::ContactProblem::Rain) {
+            return fail(QStringLiteral("--boxes: only rain has a number of boxes, not %1").arg(problem));
+        }
         bool ok = false;
         config.rainBoxes = parser.value("boxes").toInt(&ok);
         if (!ok) return fail(QStringLiteral("--boxes: must be a whole number, got \"%1\"").arg(parser.value("boxes")));
+    }
+    if (parser.isSet("output")) {
+        if (const QString conflict = cli::outputConflict({{QStringLiteral("--output"), parser.value("output")}}, {});
+            !conflict.isEmpty()) {
+            return fail(conflict);
+        }
     }
     const std::vector<SceneIssue> issues = lab::validateContactStudy(config);
     if (!issues.empty()) {
@@ -96,12 +106,13 @@ int runContactStudyCommand(const QCommandLineParser& parser, const QString& prob
     });
     const QByteArray csv = contactStudyToCsv(result).toUtf8();
     if (!parser.isSet("output")) {
-        std::fwrite(csv.constData(), 1, static_cast<std::size_t>(csv.size()), stdout);
-        std::fflush(stdout);
+        cli::standardOutput().write(csv);   // checked by main() (cli::finishStandardOutput)
         return kExitOk;
     }
     QString error;
-    if (!writeFileAtomically(parser.value("output"), csv, &error)) return fail(QStringLiteral("--output: ") + error);
+    if (!writeFileAtomically(parser.value("output"), csv, &error)) {
+        return fail(error.replace(QLatin1String(": cannot write:"), QLatin1String(": --output: cannot write:")));
+    }
     return kExitOk;
 }
 

@@ -1,12 +1,13 @@
 #include "app/cli/exercise_command.h"
 
+#include "app/cli/output_options.h"
+#include "app/cli/standard_output.h"
 #include "app/output/atomic_file.h"
 #include "app/exercise/exercise.h"
 
-#include <QFile>
+#include <QFileInfo>
 #include <QTextStream>
 
-#include <cstdio>
 
 namespace rbw {
 
@@ -37,6 +38,17 @@ int runExerciseCommand(const QCommandLineParser& parser, const QString& lesson)
     const ExerciseLoadResult loaded = loadExercise(lesson);
     if (!loaded.ok()) return fail(loaded.errors);
     const ExerciseSpec& spec = *loaded.spec;
+    // Before anything is drawn or written: each output its own file, none of them one
+    // of the lesson's files (--output exercise.json would destroy the lesson).
+    static const char* const kOutputs[] = {"output", "worksheet", "answer-key", "answers-key"};
+    std::vector<cli::NamedFile> outputs;
+    for (const char* option : kOutputs) {
+        if (parser.isSet(option)) outputs.push_back({QStringLiteral("--") + QLatin1String(option), parser.value(option)});
+    }
+    std::vector<cli::NamedFile> lessonOwn = cli::lessonFiles(QFileInfo(spec.file).path());
+    lessonOwn.push_back({QStringLiteral("the lesson's exercise.json"), spec.file});
+    lessonOwn.push_back({QStringLiteral("the lesson's scene"), spec.scenePath});
+    if (const QString conflict = cli::outputConflict(outputs, lessonOwn); !conflict.isEmpty()) return fail({conflict});
     const GeneratedExercise g = generateExercise(spec, seed);
     if (!g.ok()) return fail(g.errors);
 
@@ -54,13 +66,8 @@ int runExerciseCommand(const QCommandLineParser& parser, const QString& lesson)
     write("answer-key", exerciseWorksheetHtml(spec, g, true).toUtf8());
     write("answers-key", exerciseAnswersJson(g));
     if (!errors.isEmpty()) return fail(errors);
-    if (!parser.isSet("output")) {
-        QFile out;
-        if (!out.open(stdout, QIODevice::WriteOnly) || out.write(g.sceneJson) != g.sceneJson.size()) {
-            return fail({"exercise: cannot write to standard output"});
-        }
-        out.flush();
-    }
+    // Checked by main() (cli::finishStandardOutput).
+    if (!parser.isSet("output")) cli::standardOutput().write(g.sceneJson);
     return kExitOk;
 }
 

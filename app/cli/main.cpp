@@ -2,8 +2,12 @@
 // the state, the diagnostics and the step trace as JSON (or CSV), for scripts,
 // graders and the tests. Exit status: 0 success, 2 bad input, 3 blow-up.
 #include "app/cli/check_command.h"
+#include "app/cli/command_options.h"
 #include "app/cli/contact_study_command.h"
 #include "app/cli/exercise_command.h"
+#include "app/cli/output_options.h"
+#include "app/cli/standard_output.h"
+#include "app/output/atomic_file.h"
 #include "app/output/csv_output.h"
 #include "app/output/json_output.h"
 #include "app/core/lesson_catalogue.h"
@@ -21,7 +25,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QTextStream>
 
 #include <cmath>
@@ -33,11 +36,7 @@ constexpr int kExitOk = 0;
 constexpr int kExitBadInput = 2;
 constexpr int kExitBlowUp = 3;
 
-QTextStream& out()
-{
-    static QTextStream s(stdout);
-    return s;
-}
+using rbw::cli::out;
 
 QTextStream& err()
 {
@@ -128,21 +127,19 @@ int runScene(const QCommandLineParser& parser, const QString& sceneFile)
             }
             if (!status.ok) return blewUp(status);
             csv.writeRow(world, d);
+            if (rbw::cli::standardOutput().failed()) return kExitBadInput;   // main() reports it
         }
-        out().flush();
         return kExitOk;
     }
 
     // JSON, streamed: the header, then each traced step as it is taken (--trace all:
     // memory stays flat with the number of steps), then the result or the blow-up.
     out().flush();
-    QFile stdoutFile;
-    if (!stdoutFile.open(stdout, QIODevice::WriteOnly)) return badInput("cannot write to standard output");
+    rbw::cli::StandardOutput& stdoutFile = rbw::cli::standardOutput();
     rbw::JsonRunWriter json(stdoutFile, world, sceneFile);
     json.begin();
     auto jsonBlowUp = [&](const rbw::StepStatus& status) {
         json.finishBlowUp(status);
-        stdoutFile.flush();
         return blewUp(status);
     };
     if (const rbw::StepStatus initial = world.checkOutputs(); !initial.ok) return jsonBlowUp(initial);
@@ -154,10 +151,10 @@ int runScene(const QCommandLineParser& parser, const QString& sceneFile)
         if (status.ok && traceMode == TraceMode::None) status = world.checkOutputs();
         if (!status.ok) return jsonBlowUp(status);
         if (traceMode == TraceMode::All) json.addTrace(current);
+        if (stdoutFile.failed()) return kExitBadInput;   // main() reports it
     }
     if (traceMode == TraceMode::Last && steps > 0) json.addTrace(current);
     json.finish();
-    stdoutFile.flush();
     return kExitOk;
 }
 
@@ -173,6 +170,11 @@ int runStudyCommand(const QCommandLineParser& parser, const QString& sceneFile)
         return kExitBadInput;
     }
     const rbw::SceneDef scene = std::move(*loaded.scene);
+    if (parser.isSet("output")) {
+        const QString conflict = rbw::cli::outputConflict({{"--output", parser.value("output")}},
+                                                          {{"the scene file (the input)", sceneFile}});
+        if (!conflict.isEmpty()) return badInput(conflict);
+    }
     auto studyError = [&sceneFile](const QString& field, const QString& reason) {
         return badInput(sceneFile + ": " + field + ": " + reason);
     };
@@ -217,13 +219,12 @@ int runStudyCommand(const QCommandLineParser& parser, const QString& sceneFile)
     const QString csv = rbw::studyToCsv(result);
     if (!parser.isSet("output")) {
         out() << csv;
-        out().flush();
         return kExitOk;
     }
-    // QSaveFile: the file appears complete or not at all
-    QSaveFile file(parser.value("output"));
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text) || file.write(csv.toUtf8()) < 0 || !file.commit()) {
-        return badInput(parser.value("output") + ": output: cannot write: " + file.errorString());
+    // The file appears complete or not at all (app/output/atomic_file.h).
+    QString error;
+    if (!rbw::writeFileAtomically(parser.value("output"), csv.toUtf8(), &error)) {
+        return badInput(error.replace(QLatin1String(": cannot write:"), QLatin1String(": --output: cannot write:")));
     }
     return kExitOk;
 }
@@ -298,15 +299,27 @@ int listQuantities(const QCommandLineParser& parser)
     return kExitOk;
 }
 
+int dispatch(QCommandLineParser& parser);
+
 } // namespace
 
+// Every command's standard output is flushed and checked at the end (issue 22): a write
+// error is exit status 2 with "cannot write to standard output: REASON".
 int main(int argc, char* argv[])
 {
     QCoreApplication app(argc, argv);
+    QCommandLineParser parser;
+    const int status = dispatch(parser);
+    return rbw::cli::finishStandardOutput(status);
+}
+
+namespace {
+
+int dispatch(QCommandLineParser& parser)
+{
     QCoreApplication::setApplicationName("rbw");
     QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_STRING));
 
-    QCommandLineParser parser;
     parser.setApplicationDescription(
         "Rigid Body Workbook, headless.\n\n"
         "Commands:\n"
@@ -356,17 +369,22 @@ int main(int argc, char* argv[])
     if (!parser.parse(QCoreApplication::arguments())) {
         return badInput(parser.errorText() + " (see rbw --help)");
     }
+    // Help and version through the checked standard output (not QCommandLineParser's
+    // showHelp/showVersion, which write with stdio and exit without checking).
     if (parser.isSet("help")) {
-        parser.showHelp(kExitOk);
+        out() << parser.helpText();
+        return kExitOk;
     }
     if (parser.isSet("version")) {
-        parser.showVersion();
+        out() << QCoreApplication::applicationName() << ' ' << QCoreApplication::applicationVersion() << '\n';
+        return kExitOk;
     }
     const QStringList args = parser.positionalArguments();
     if (args.isEmpty()) {
         return badInput("no command given (see rbw --help)");
     }
     const QString command = args.first();
+    if (const QString problem = rbw::cli::optionProblem(parser, command); !problem.isEmpty()) return badInput(problem);
     if (command == "run") {
         if (args.size() != 2) return badInput("run takes exactly one scene file (see rbw --help)");
         return runScene(parser, args[1]);
@@ -392,3 +410,5 @@ int main(int argc, char* argv[])
     }
     return badInput("unknown command \"" + args.join(' ') + "\" (see rbw --help)");
 }
+
+} // namespace

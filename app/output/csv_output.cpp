@@ -16,7 +16,7 @@ QString exact(double x)
 // RFC 4180: a cell with a comma, quote or line break is quoted, quotes doubled.
 QString cell(const QString& text)
 {
-    if (!text.contains(',') && !text.contains('"') && !text.contains('\n')) return text;
+    if (!text.contains(',') && !text.contains('"') && !text.contains('\n') && !text.contains('\r')) return text;
     return '"' + QString(text).replace('"', QStringLiteral("\"\"")) + '"';
 }
 

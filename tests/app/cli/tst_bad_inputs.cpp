@@ -16,6 +16,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QRegularExpression>
 #include <QSaveFile>
 #include <QTemporaryDir>
@@ -102,7 +103,18 @@ Outcome runCase(const QJsonObject& c, const QByteArray& base, QTemporaryDir& dir
         a.replace(QStringLiteral("{scene}"), scene);
         a.replace(QStringLiteral("{dir}"), QFileInfo(scene).path());
     }
-    const rbw::test::RbwRun run = rbw::test::runRbw(args);
+    // "stdout": a file standard output is redirected into (e.g. /dev/full, issue 22).
+    const QString stdoutFile = c.value(QStringLiteral("stdout")).toString();
+    rbw::test::RbwRun run;
+    if (stdoutFile.isEmpty()) {
+        run = rbw::test::runRbw(args);
+    } else {
+        QProcess p;
+        p.setStandardOutputFile(stdoutFile);
+        p.start(QStringLiteral(RBW_CLI_PATH), args);
+        p.waitForFinished(120000);
+        run = rbw::test::RbwRun{p.exitCode(), {}, QString::fromUtf8(p.readAllStandardError())};
+    }
     o.exit = run.exitCode;
     o.message = run.err.trimmed();
     o.message.replace(scene, QStringLiteral("scene.json"));

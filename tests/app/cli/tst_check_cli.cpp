@@ -91,6 +91,21 @@ private slots:
                 lines[5].contains(QStringLiteral("velocity-before-position")));
     }
 
+    // CSV quotes any field with a comma, a quote or a line break (RFC 4180, issue 22):
+    // a file name with a line break (and no comma or quote, which were quoted before)
+    // is one quoted field, once per answer (4 of kRight). Control: a plain name is not
+    // quoted.
+    void csvQuotesLineBreaks()
+    {
+        const QString odd = write(QStringLiteral("odd\nline.json"), kRight);
+        const rbw::test::RbwRun r = rbw::test::runRbw({"check", kScene, odd, "--format", "csv"});
+        QCOMPARE(r.exitCode, 0);
+        const QString quoted = QLatin1Char('"') + odd + QStringLiteral("\",0,");
+        QCOMPARE(QString::fromUtf8(r.out).count(quoted), 4);
+        const rbw::test::RbwRun plain = rbw::test::runRbw({"check", kScene, write("plain.json", kRight), "--format", "csv"});
+        QCOMPARE(QString::fromUtf8(plain.out).count(dir_.filePath("plain.json") + QStringLiteral(",0,")), 4);
+    }
+
     void badAnswers_data()
     {
         QTest::addColumn<QByteArray>("text");

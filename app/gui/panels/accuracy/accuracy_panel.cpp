@@ -2,6 +2,7 @@
 
 #include "app/gui/panels/accuracy/log_axes.h"
 
+#include "app/output/atomic_file.h"
 #include "app/output/study_csv.h"
 #include "app/gui/panels/accuracy/study_table_model.h"
 #include "physics/engine/integrator_registry.h"
@@ -26,7 +27,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
-#include <QSaveFile>
+#include <QBuffer>
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -456,23 +457,18 @@ void AccuracyPanel::updateButtons()
 bool AccuracyPanel::exportPng(const QString& path, QString* error)
 {
     const QPixmap pixmap = chartView_->grab();
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || !pixmap.save(&file, "PNG") || !file.commit()) {
-        if (error) *error = tr("%1: cannot write: %2").arg(path, file.errorString());
+    QByteArray png;
+    QBuffer buffer(&png);
+    if (!buffer.open(QIODevice::WriteOnly) || !pixmap.save(&buffer, "PNG")) {
+        if (error) *error = tr("%1: cannot write: the PNG could not be encoded").arg(path);
         return false;
     }
-    return true;
+    return writeFileAtomically(path, png, error);   // complete or not at all
 }
 
 bool AccuracyPanel::exportCsv(const QString& path, QString* error) const
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text) ||
-        file.write(studyToCsv(model_->result()).toUtf8()) < 0 || !file.commit()) {
-        if (error) *error = tr("%1: cannot write: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return writeFileAtomically(path, studyToCsv(model_->result()).toUtf8(), error);
 }
 
 void AccuracyPanel::onExportPng()

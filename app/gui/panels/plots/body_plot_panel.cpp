@@ -4,13 +4,14 @@
 #include "app/gui/panels/plots/axis_fit.h"
 
 #include "app/gui/panels/plots/plot_axis_range.h"
+#include "app/output/atomic_file.h"
 
 #include <QChart>
 #include <QChartView>
 #include <QImage>
 #include <QLineSeries>
 #include <QPainter>
-#include <QSaveFile>
+#include <QBuffer>
 #include <QTabWidget>
 #include <QTimer>
 #include <QValueAxis>
@@ -194,13 +195,14 @@ bool BodyPlotPanel::exportPng(const QString& path, QString* error)
     QPainter painter(&image);
     view->render(&painter, QRectF(QPointF(0, 0), QSizeF(size)));
     painter.end();
-    // QSaveFile: the PNG appears complete or not at all.
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit()) {
-        if (error != nullptr) *error = tr("cannot write %1: %2").arg(path, file.errorString());
+    // The PNG appears complete or not at all (app/output/atomic_file.h).
+    QByteArray png;
+    QBuffer buffer(&png);
+    if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG")) {
+        if (error != nullptr) *error = tr("%1: cannot write: the PNG could not be encoded").arg(path);
         return false;
     }
-    return true;
+    return writeFileAtomically(path, png, error);
 }
 
 } // namespace rbw

@@ -1,7 +1,8 @@
 #include "app/gui/panels/plots/plot_series.h"
 
+#include "app/output/atomic_file.h"
+
 #include <QLocale>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
@@ -121,17 +122,7 @@ QByteArray PlotSeries::csv() const
 
 bool PlotSeries::writeCsv(const QString& path, QString* error) const
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        if (error != nullptr) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    const QByteArray text = csv();
-    if (file.write(text) != text.size() || !file.commit()) {
-        if (error != nullptr) *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return writeFileAtomically(path, csv(), error);   // complete or not at all
 }
 
 } // namespace rbw

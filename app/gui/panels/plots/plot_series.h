@@ -53,7 +53,7 @@ public:
     // ids), then one row per sample. Numbers are the shortest text that reads back as
     // the same double, as in the CLI's CSV (app/output/csv_output.cpp).
     QByteArray csv() const;
-    // Writes csv() to path atomically (QSaveFile). False with a message on failure.
+    // Writes csv() to path atomically (app/output/atomic_file.h). False with a message on failure.
     bool writeCsv(const QString& path, QString* error) const;
 
 private:
