@@ -2,10 +2,16 @@
 
 #include "app/output/value_format.h"
 #include "physics/engine/quantities.h"
+#include "physics/engine/world.h"
 
 #include <QBrush>
 #include <QColor>
 #include <QFont>
+#include <QRegularExpression>
+#include <QStringList>
+
+#include <algorithm>
+#include <cmath>
 
 namespace rbw {
 
@@ -54,7 +60,88 @@ bool sameValue(const TraceValue& a, const TraceValue& b)
         a);
 }
 
+// A matrix as three lines with its columns aligned (in the proportional font: two
+// matrices side by side in a monospace font need 600 px at 1366x768). All entries get
+// the same decimals, `digits` significant ones for the largest entry (R: 0.9925, and
+// 0.0048 not 0.004819), as a printed matrix does; an entry that rounds to zero is "0".
+// A matrix of very large or very small entries keeps 'g' with `digits` digits.
+QString matrixLines(const Mat3& m, int digits)
+{
+    const double scale = m.cwiseAbs().maxCoeff();
+    const bool fixed = scale >= 1e-4 && scale < 1e6;
+    const int decimals = fixed ? std::clamp(digits - 1 - static_cast<int>(std::floor(std::log10(scale))), 0, 9) : 0;
+    QString cells[3][3];
+    int width[3] = {0, 0, 0};
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) {
+            const double x = std::abs(m(r, c)) < 1e-12 * scale ? 0.0 : m(r, c);
+            QString text = fixed ? QString::number(x, 'f', decimals) : formatNumber(x, digits);
+            if (fixed && QString(text).remove('-').remove('.').count('0') == text.count(QRegularExpression("[0-9]"))) {
+                text = QStringLiteral("0");
+            }
+            cells[r][c] = text;
+            width[c] = std::max(width[c], static_cast<int>(text.size()));
+        }
+    }
+    QStringList rows;
+    for (int r = 0; r < 3; ++r) {
+        QStringList row;
+        // Padded with figure spaces (U+2007, a digit's width in the proportional font
+        // the cell uses), so the columns line up.
+        for (int c = 0; c < 3; ++c) row << cells[r][c].rightJustified(width[c], QChar(0x2007));
+        rows << row.join(QChar(0x2007));
+    }
+    return rows.join('\n');
+}
+
+bool anyImpulse(const StepTrace& trace)
+{
+    for (const ContactHeader& c : trace.contacts) {
+        if (!c.separating) return true;
+    }
+    return false;
+}
+
 } // namespace
+
+QString TraceModel::cellText(const TraceValue& value) const
+{
+    if (const Mat3* m = std::get_if<Mat3>(&value)) return matrixLines(*m, matrixDigits_);
+    return formatValueLines(value);
+}
+
+void TraceModel::setMatrixDigits(int digits)
+{
+    digits = std::clamp(digits, 3, 7);
+    if (digits == matrixDigits_) return;
+    matrixDigits_ = digits;   // the same lines, only shorter: the view repaints (TraceView)
+}
+
+void TraceModel::setStart(const World& world)
+{
+    StepTrace start;
+    start.step = world.stepIndex();
+    start.time = world.time();
+    start.start.bodies = world.states();
+    const std::vector<BodyState>& states = world.states();
+    for (int b = 0; b < static_cast<int>(states.size()); ++b) {
+        const BodyState& s = states[static_cast<size_t>(b)];
+        start.add(q::position, b, s.x_W);
+        start.add(q::linear_velocity, b, s.v_W);
+        start.add(q::orientation, b, s.q_WB);
+        start.add(q::rotation_matrix, b, s.R_WB);
+        start.add(q::angular_momentum, b, s.L_W);
+        start.add(q::inverse_inertia_world, b, s.Iinv_W);
+        start.add(q::angular_velocity, b, s.omega_W);
+    }
+    beginResetModel();
+    trace_ = std::move(start);
+    changed_.assign(trace_.entries.size(), 0);
+    startOnly_ = true;
+    impulseAfterIntegration_ = false;
+    rebuild(world.scene());
+    endResetModel();
+}
 
 TraceModel::TraceModel(QObject* parent)
     : QAbstractItemModel(parent)
@@ -65,6 +152,8 @@ TraceModel::TraceModel(QObject* parent)
 void TraceModel::clear()
 {
     beginResetModel();
+    startOnly_ = false;
+    impulseAfterIntegration_ = false;
     trace_ = StepTrace{};
     changed_.clear();
     nodes_.assign(1, Node{});
@@ -95,7 +184,7 @@ bool TraceModel::sameShape(const StepTrace& next) const
 
 void TraceModel::setTrace(const StepTrace& trace, const SceneDef& scene)
 {
-    if (!trace_.entries.empty() && sameShape(trace)) {
+    if (!startOnly_ && !trace_.entries.empty() && sameShape(trace)) {
         // Same rows: report only rows whose value or highlight changed.
         std::vector<char> touched(trace.entries.size(), 0);
         for (size_t i = 0; i < trace.entries.size(); ++i) {
@@ -116,7 +205,7 @@ void TraceModel::setTrace(const StepTrace& trace, const SceneDef& scene)
     // A new shape: a row is "changed" when the previous step had no row with the same
     // quantity, body and index, or had a different value there.
     changed_.assign(trace.entries.size(), 0);
-    if (!trace_.entries.empty()) {
+    if (!trace_.entries.empty() && !startOnly_) {
         for (size_t i = 0; i < trace.entries.size(); ++i) {
             const TraceEntry& e = trace.entries[i];
             const TraceEntry* before = trace_.find(e.info->id, e.body, e.index);
@@ -124,6 +213,8 @@ void TraceModel::setTrace(const StepTrace& trace, const SceneDef& scene)
         }
     }
     trace_ = trace;
+    startOnly_ = false;
+    impulseAfterIntegration_ = anyImpulse(trace_);
     rebuild(scene);
     endResetModel();
 }
@@ -150,13 +241,27 @@ void TraceModel::rebuild(const SceneDef& scene)
         if (plane >= 0) return QString::fromStdString(scene.planes[plane].name);
         return body >= 0 ? QString::fromStdString(scene.bodies[body].name) : QString();
     };
-    for (Stage stage : {Stage::Forces, Stage::Integration, Stage::Collision, Stage::Correction, Stage::Probes}) {
+    // A step with a collision impulse: the collision first, it is what the step is about.
+    const std::vector<Stage> order =
+        impulseAfterIntegration_
+            ? std::vector<Stage>{Stage::Collision, Stage::Forces, Stage::Integration, Stage::Correction, Stage::Probes}
+            : std::vector<Stage>{Stage::Forces, Stage::Integration, Stage::Collision, Stage::Correction, Stage::Probes};
+    auto title = [&](Stage stage) {
+        if (startOnly_) {
+            return tr("Start: the state at t = %1 s, before step %2").arg(trace_.time, 0, 'g', 6).arg(trace_.step);
+        }
+        if (stage == Stage::Integration && impulseAfterIntegration_) {
+            return tr("Integration (After: before the collision impulse above)");
+        }
+        return stageTitle(stage);
+    };
+    for (Stage stage : order) {
         int stageNode = -1;
         if (stage == Stage::Collision) {
             for (size_t i = 0; i < trace_.entries.size(); ++i) {
                 const TraceEntry& e = trace_.entries[i];
                 if (e.info->stage != Stage::Collision || e.index >= 0) continue;
-                if (stageNode < 0) stageNode = addChild(0, stageTitle(stage), -1);
+                if (stageNode < 0) stageNode = addChild(0, title(stage), -1);
                 rowOfEntry_[i] = addChild(stageNode, QString(), static_cast<int>(i));
             }
             // Contacts grouped by pair: a pair with several contacts (the corners of a
@@ -168,7 +273,7 @@ void TraceModel::rebuild(const SceneDef& scene)
             int pairNode = -1;
             for (int k = 0; k < static_cast<int>(trace_.contacts.size()); ++k) {
                 const ContactHeader& c = trace_.contacts[k];
-                if (stageNode < 0) stageNode = addChild(0, stageTitle(stage), -1);
+                if (stageNode < 0) stageNode = addChild(0, title(stage), -1);
                 const bool newPair = k == 0 || !samePair(c, trace_.contacts[k - 1]);
                 int points = 1;
                 while (k + points < static_cast<int>(trace_.contacts.size()) &&
@@ -198,7 +303,7 @@ void TraceModel::rebuild(const SceneDef& scene)
             for (size_t i = 0; i < trace_.entries.size(); ++i) {
                 const TraceEntry& e = trace_.entries[i];
                 if (e.info->stage != stage || e.body != body) continue;
-                if (stageNode < 0) stageNode = addChild(0, stageTitle(stage), -1);
+                if (stageNode < 0) stageNode = addChild(0, title(stage), -1);
                 if (bodyNode < 0) {
                     bodyNode = body < 0 ? stageNode
                                         : addChild(stageNode, QString::fromStdString(scene.bodies[body].name), -1);
@@ -279,12 +384,15 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const
         case BeforeColumn: {
             TraceValue before;
             if (!startValue(trace_, e.info->id, e.body, e.index, &before)) return {};
-            return formatValueLines(before);
+            return cellText(before);
         }
-        case ValueColumn: return formatValueLines(e.value);
+        case ValueColumn:
+            if (startOnly_) return {};
+            return cellText(e.value);
         case FrameColumn: return QString::fromLatin1(frameName(e.info->frame));
         case UnitColumn: return QString::fromUtf8(e.info->unit);
         case SourceColumn: {
+            if (startOnly_) return {};
             // The file's name and the line; the tooltip has the path in the tree.
             const std::string_view file = sourceFile(e);
             const size_t slash = file.rfind('/');
@@ -299,22 +407,43 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const
     case Qt::TextAlignmentRole:
         return QVariant(Qt::AlignLeft | Qt::AlignTop);
     case Qt::ToolTipRole:
+        if (startOnly_) {
+            return tr("%1 at t = %2 s, the state step %3 starts from:\n%4")
+                .arg(QString::fromUtf8(e.info->text))
+                .arg(trace_.time, 0, 'g', 6)
+                .arg(trace_.step)
+                .arg(formatValue(e.value));
+        }
         if (index.column() == SourceColumn) {
             return QString::fromStdString(sourceText(e));
         }
         if (index.column() == BeforeColumn) {
-            return tr("%1 at the start of step %2, the value this step starts from")
+            TraceValue before;
+            const QString full = startValue(trace_, e.info->id, e.body, e.index, &before) ? formatValue(before) : QString();
+            return tr("%1 at the start of step %2, the value this step starts from:\n%3")
                 .arg(QString::fromUtf8(e.info->text))
-                .arg(trace_.step);
+                .arg(trace_.step)
+                .arg(full);
+        }
+        if (index.column() == ValueColumn) {
+            QString tip = QStringLiteral("%1 = %2").arg(QString::fromUtf8(e.info->text), formatValue(e.value));
+            if (e.info->stage == Stage::Integration && impulseAfterIntegration_) {
+                tip += tr("\nAfter the integration, before the collision impulse of this step changes it");
+            }
+            return tip + tr("\n%1\nComputed in %2").arg(QString::fromUtf8(e.info->formula), QString::fromStdString(sourceText(e)));
         }
         return tr("%1\nComputed in %2").arg(QString::fromUtf8(e.info->formula), QString::fromStdString(sourceText(e)));
     case Qt::BackgroundRole:
         if (changed_[n.entry]) return QBrush(QColor(255, 244, 196));
         return {};
     case Qt::FontRole:
-        if (index.column() == ValueColumn || index.column() == BeforeColumn || index.column() == SourceColumn) {
+        if (index.column() == ValueColumn || index.column() == BeforeColumn) {
+            // Numbers line up in a monospace font; a matrix is narrower in the
+            // proportional one (its figure spaces keep the columns).
+            if (std::holds_alternative<Mat3>(e.value)) return {};
             return QFont(QStringLiteral("monospace"));
         }
+        if (index.column() == SourceColumn) return QFont(QStringLiteral("monospace"));
         return {};
     case IdRole:
         return QString::fromLatin1(e.info->id);
@@ -334,6 +463,7 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const
     case ChangedRole:
         return bool(changed_[n.entry]);
     case SourceFileRole: {
+        if (startOnly_) return QString();
         const std::string_view file = sourceFile(e);
         return QString::fromUtf8(file.data(), static_cast<qsizetype>(file.size()));
     }

@@ -6,10 +6,19 @@
 // explicit_euler.cpp:27" as its tooltip) and formula. It only presents the trace; it
 // never computes a number. When the next step has the same rows, only the values
 // that changed are reported (dataChanged), and they are highlighted.
+//
+// Before the first step it shows the start: every body's state (x, v, q, R, L, I^-1,
+// omega) in the Before column (setStart). In a step with a collision, the collision
+// group comes first and the integration group says that its After is the value before
+// the impulse. A matrix is three lines; matrixDigits() sets its significant digits in
+// the cells (the view lowers them when the table would not fit), the tooltip always
+// has all seven.
 #pragma once
 
 #include "physics/engine/scene.h"
 #include "physics/engine/trace.h"
+
+namespace rbw { class World; }
 
 #include <QAbstractItemModel>
 
@@ -48,7 +57,17 @@ public:
     // Shows this trace; bodies are named from the scene. Passing an empty trace clears.
     void setTrace(const StepTrace& trace, const SceneDef& scene);
     void clear();
+    // The state before the first step (or any state without a trace): each body's x, v,
+    // q, R, L, I^-1 and omega as the world holds them, in the Before column.
+    void setStart(const World& world);
+    bool showsStart() const { return startOnly_; }
     const StepTrace& trace() const { return trace_; }
+    // Significant digits of a matrix in the Before and After cells (3..7, default 7).
+    // Emits nothing: the same three lines, only shorter; the caller (TraceView) repaints.
+    void setMatrixDigits(int digits);
+    int matrixDigits() const { return matrixDigits_; }
+    // Whether this step's integration rows come before a collision impulse.
+    bool integrationBeforeImpulse() const { return impulseAfterIntegration_; }
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
     QModelIndex parent(const QModelIndex& child) const override;
@@ -77,6 +96,10 @@ private:
     std::vector<char> changed_;   // per entry
     std::vector<Node> nodes_;     // nodes_[0] is the root
     std::vector<int> rowOfEntry_; // node index of each entry
+    bool startOnly_ = false;      // setStart: the rows are a state, not a step
+    bool impulseAfterIntegration_ = false;
+    int matrixDigits_ = 7;
+    QString cellText(const TraceValue& value) const;
 };
 
 } // namespace rbw

@@ -1,5 +1,7 @@
 #include "app/gui/panels/view/scene_view.h"
 
+#include "app/gui/style/number_text.h"
+
 #include "app/gui/panels/view/ray_pick.h"
 #include "app/gui/panels/view/view_style.h"
 
@@ -188,8 +190,8 @@ QString SceneView::infoText() const
 {
     QString text = tr("step %1 · t = %2 s · h = %3 s · %4")
                        .arg(snapshot_.nextStep)
-                       .arg(snapshot_.time, 0, 'g', 6)
-                       .arg(snapshot_.h, 0, 'g', 6)
+                       .arg(shortNumber(snapshot_.time))
+                       .arg(shortNumber(snapshot_.h))   // as the h box shows it
                        .arg(QString::fromStdString(snapshot_.integrator));
     if (snapshot_.energyFinite) text += tr(" · E = %1 J").arg(snapshot_.energy, 0, 'g', 7);
     if (followBody_ >= 0 && followBody_ < static_cast<int>(snapshot_.bodies.size())) {

@@ -1,0 +1,144 @@
+#include "app/gui/panels/quantities/trace_view.h"
+
+#include "app/gui/panels/quantities/trace_model.h"
+
+#include <QFontMetrics>
+#include <QHeaderView>
+#include <QScrollBar>
+#include <QStyle>
+#include <QTimer>
+
+#include <functional>
+
+#include <algorithm>
+
+namespace rbw {
+
+namespace {
+
+// Columns sized to their widest cell, in the order they get their room.
+constexpr int kValueColumns[] = {TraceModel::BeforeColumn, TraceModel::ValueColumn, TraceModel::FrameColumn,
+                                 TraceModel::UnitColumn};
+
+void forEachIndex(const QAbstractItemModel* model, const QModelIndex& parent, int column,
+                  const std::function<void(const QModelIndex&)>& f)
+{
+    for (int r = 0; r < model->rowCount(parent); ++r) {
+        f(model->index(r, column, parent));
+        const QModelIndex first = model->index(r, 0, parent);
+        if (model->rowCount(first) > 0) forEachIndex(model, first, column, f);
+    }
+}
+
+} // namespace
+
+TraceView::TraceView(TraceModel* model, QWidget* parent)
+    : QTreeView(parent)
+    , model_(model)
+{
+    setObjectName("traceView");
+    setModel(model);
+    setAlternatingRowColors(true);
+    setSelectionBehavior(QAbstractItemView::SelectRows);
+    setSelectionMode(QAbstractItemView::ExtendedSelection);
+    // Matrices take three lines (one row each), so rows differ in height.
+    setUniformRowHeights(false);
+    setWordWrap(false);
+    setIndentation(12);   // three levels (stage, body, row) without losing the values' room
+    setTextElideMode(Qt::ElideRight);
+    header()->setStretchLastSection(true);
+    header()->setMinimumSectionSize(24);
+    // The formula is typeset in the pane below the table, not shown as raw LaTeX.
+    setColumnHidden(TraceModel::FormulaColumn, true);
+    connect(model, &QAbstractItemModel::modelReset, this, [this] {
+        expandAll();
+        fitColumns();
+    });
+    connect(model, &QAbstractItemModel::dataChanged, this, &TraceView::onDataChanged);
+}
+
+int TraceView::cellWidth(const QModelIndex& index) const
+{
+    const QString text = index.data(Qt::DisplayRole).toString();
+    if (text.isEmpty()) return 0;
+    const QVariant fontData = index.data(Qt::FontRole);
+    const QFontMetrics metrics(fontData.isValid() ? fontData.value<QFont>() : font());
+    int widest = 0;
+    for (const QString& line : text.split('\n')) widest = std::max(widest, metrics.horizontalAdvance(line));
+    // QStyledItemDelegate's text margin on each side, and a pixel to spare.
+    const int margin = style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, this) + 1;
+    return widest + 2 * margin + 2;
+}
+
+int TraceView::widestCell(int column) const
+{
+    int widest = 0;
+    forEachIndex(model(), QModelIndex(), column, [&](const QModelIndex& i) { widest = std::max(widest, cellWidth(i)); });
+    return widest;
+}
+
+int TraceView::headerWidth(int column) const
+{
+    const QFontMetrics metrics(header()->font());
+    const int margin = style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header());
+    return metrics.horizontalAdvance(model()->headerData(column, Qt::Horizontal).toString()) + 2 * margin + 4;
+}
+
+void TraceView::fitColumns()
+{
+    if (fitting_) return;
+    fitting_ = true;
+    const int available = viewport()->width() > 50 ? viewport()->width() : width() - 20;
+    const int symbol = std::min(kMaxSymbolWidth, std::max(headerWidth(TraceModel::SymbolColumn),
+                                                          widestCell(TraceModel::SymbolColumn)));
+    auto valuesWidth = [&](int* widths) {
+        int sum = 0;
+        for (int k = 0; k < 4; ++k) {
+            widths[k] = std::max(headerWidth(kValueColumns[k]), widestCell(kValueColumns[k]));
+            sum += widths[k];
+        }
+        return sum;
+    };
+    int widths[4];
+    // Two matrices side by side too wide: fewer digits in the cells (never below 3).
+    model_->setMatrixDigits(7);
+    int needed = valuesWidth(widths);
+    for (int digits = 6; digits >= 3 && symbol + needed + kMinQuantityWidth > available; --digits) {
+        model_->setMatrixDigits(digits);
+        needed = valuesWidth(widths);
+    }
+    // The Quantity column: its names, within what is left, elided below that.
+    const int quantityNeed = std::max(headerWidth(TraceModel::QuantityColumn), widestCell(TraceModel::QuantityColumn));
+    const int left = available - symbol - needed;
+    const int quantity = std::clamp(std::min(quantityNeed, left), kMinQuantityWidth, kMaxQuantityWidth);
+    setColumnWidth(TraceModel::QuantityColumn, quantity);
+    setColumnWidth(TraceModel::SymbolColumn, symbol);
+    for (int k = 0; k < 4; ++k) setColumnWidth(kValueColumns[k], widths[k]);
+    setColumnWidth(TraceModel::SourceColumn, std::max(headerWidth(TraceModel::SourceColumn), widestCell(TraceModel::SourceColumn)));
+    horizontalScrollBar()->setValue(0);
+    viewport()->update();
+    fitting_ = false;
+}
+
+void TraceView::onDataChanged(const QModelIndex& topLeft, const QModelIndex& bottomRight)
+{
+    // A value that grew (playing: -5.8 becomes -5.886) must not be clipped.
+    const QModelIndex parent = topLeft.parent();
+    for (int r = topLeft.row(); r <= bottomRight.row(); ++r) {
+        for (int c : kValueColumns) {
+            if (c < topLeft.column() || c > bottomRight.column()) continue;
+            if (cellWidth(model()->index(r, c, parent)) > columnWidth(c)) {
+                QTimer::singleShot(0, this, &TraceView::fitColumns);   // once, after the batch
+                return;
+            }
+        }
+    }
+}
+
+void TraceView::resizeEvent(QResizeEvent* event)
+{
+    QTreeView::resizeEvent(event);
+    fitColumns();
+}
+
+} // namespace rbw

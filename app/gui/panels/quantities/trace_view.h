@@ -1,0 +1,47 @@
+// The quantities table: a QTreeView over a TraceModel that keeps every value on
+// screen (issue 20, item 3). The columns are sized to what they hold: Before, After,
+// Frame and Unit to their widest cell, so a value is never clipped (a matrix's digits
+// are lowered, down to 3, when two matrices side by side would not fit; the tooltip
+// has all of them); Frame and Unit stay narrow; the Quantity column takes what is
+// left (at least kMinQuantityWidth, its name elided, the whole name in the tooltip),
+// the Symbol column at most kMaxSymbolWidth, and Source the rest. Every new step,
+// scrub or resize fits the columns again; a value that grows while playing widens
+// its column.
+#pragma once
+
+#include <QTreeView>
+
+namespace rbw {
+
+class TraceModel;
+
+class TraceView : public QTreeView {
+    Q_OBJECT
+public:
+    static constexpr int kMinQuantityWidth = 96;
+    static constexpr int kMaxQuantityWidth = 220;
+    static constexpr int kMaxSymbolWidth = 56;
+
+    explicit TraceView(TraceModel* model, QWidget* parent = nullptr);
+    TraceModel* traceModel() const { return model_; }
+
+    // The width a cell's text needs: its widest line in the cell's font, with the
+    // delegate's margins.
+    int cellWidth(const QModelIndex& index) const;
+    // Sizes every column as described above.
+    void fitColumns();
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
+private:
+    void onDataChanged(const QModelIndex& topLeft, const QModelIndex& bottomRight);
+    // The widest cell of a column over every row (expanded or not).
+    int widestCell(int column) const;
+    int headerWidth(int column) const;
+
+    TraceModel* model_;
+    bool fitting_ = false;
+};
+
+} // namespace rbw
