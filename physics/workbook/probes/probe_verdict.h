@@ -1,0 +1,69 @@
+// What a simulator's answers to the probes say (issue 23, docs/simulator-protocol.md,
+// "Verdicts"): whether the right algorithm reproduces them, which mistake model does,
+// and where they first leave the right algorithm. Used by `rbw diagnose --simulator`
+// (app/cli/diagnose_command.cpp) and by the distinguishability test.
+//
+// When two numbers are the same: |given - expected| <= kRelativeTolerance * s, s the
+// largest |value| of that quantity (x, v, omega or r) in the expected answers of the
+// whole probe (1 when it is zero throughout), so that float round-off matches, as in
+// the TUM template's own tests (relative 1e-4). r is compared up to its sign (r and -r
+// are the same orientation), and only when both sides give it (13 numbers).
+#pragma once
+
+#include "physics/workbook/probes/probes.h"
+#include "physics/workbook/probes/replay.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rbw::probes {
+
+constexpr double kRelativeTolerance = 1e-4;
+
+// The first number that differs.
+struct Divergence {
+    int answer = 0;         // index of the answer among the probe's `state` answers
+    int step = 0;           // steps before it (answerSlots)
+    int body = 0;
+    std::string quantity;   // "x", "v", "omega" or "r"
+    int component = 0;      // 0, 1, 2 (, 3 for r: w, x, y, z)
+    std::vector<double> expected, given;   // the whole quantity, 3 (r: 4) numbers
+    double tolerance = 0.0;                // the allowed |difference|, times the margin
+};
+
+// The first number of `given` farther than margin * tolerance from `expected` (answers
+// in order, then x, v, omega, r, then components); none when every number agrees.
+// `given` may have 9 or 13 numbers per answer; a missing answer is not compared.
+std::optional<Divergence> firstDivergence(const Probe& probe, const Answers& expected, const Answers& given,
+                                          double margin = 1.0);
+
+enum class Verdict { Matches, Explained, PartlyExplained, Unexplained };
+const char* verdictName(Verdict v);   // "matches", "explained", "partly-explained", "unexplained"
+
+struct ProbeOutcome {
+    bool matchesRight = false;
+    std::vector<std::string> reproducedBy;   // labels of the models that give these answers
+};
+
+struct SimulatorDiagnosis {
+    Verdict verdict = Verdict::Unexplained;
+    std::vector<std::string> mistakes;           // the one explanation's id
+    std::vector<std::string> possibleMistakes;   // ids, when several explain equally well
+    int divergenceProbe = -1;                    // index of the probe of firstDivergence, -1: none
+    std::optional<Divergence> firstDivergence;   // against the right algorithm
+    std::vector<ProbeOutcome> probes;            // one per probe
+};
+
+// `given[i]` holds the answers to probes[i]. Verdicts:
+//   matches           the right algorithm reproduces every answer;
+//   explained         a candidate reproduces every answer of every probe;
+//   partly-explained  none does, but some reproduce the answers of a probe where the
+//                     right algorithm does not (the ones that do so for most probes are
+//                     named);
+//   unexplained       no candidate reproduces any probe where the answers are wrong.
+// Candidates that differ only in their variant count as one id.
+SimulatorDiagnosis diagnoseAnswers(const std::vector<Probe>& probes, const std::vector<Answers>& given,
+                                   const std::vector<ReplayModel>& candidates);
+
+} // namespace rbw::probes

@@ -1,0 +1,222 @@
+#include "physics/workbook/probes/replay.h"
+
+#include "physics/engine/inertia.h"
+#include "physics/engine/scene.h"
+#include "physics/engine/world.h"
+
+#include <utility>
+
+namespace rbw::probes {
+
+bool operator==(const ReplayModel& a, const ReplayModel& b)
+{
+    return a.mistake == b.mistake && a.variant == b.variant;
+}
+
+std::string modelId(const ReplayModel& model)
+{
+    if (model.mistake == Mistake::None) return {};
+    for (const MistakeInfo& m : mistakeCatalogue()) {
+        if (m.mistake == model.mistake) return m.id;
+    }
+    return "unknown-mistake";
+}
+
+std::string modelLabel(const ReplayModel& model)
+{
+    if (model.mistake == Mistake::None) return "the right algorithm";
+    std::string label = modelId(model);
+    if (model.mistake == Mistake::InertiaAxesSwapped) {
+        static const char* const axes[3] = {"x-y", "y-z", "x-z"};   // mistakes.cpp's variants
+        label += std::string(" (") + axes[model.variant % 3] + ")";
+    }
+    return label;
+}
+
+std::vector<AnswerSlot> answerSlots(const Probe& probe)
+{
+    std::vector<AnswerSlot> slots;
+    int steps = 0;
+    for (const Command& c : probe.commands) {
+        if (c.kind == CommandKind::Step) ++steps;
+        if (c.kind == CommandKind::State) slots.push_back({steps, c.body});
+    }
+    return slots;
+}
+
+namespace {
+
+// One body of the simulated scene: what a student's simulator stores.
+struct SimBody {
+    double mass = 1.0;
+    Vec3 size = Vec3::Ones();
+    Vec3 x_W = Vec3::Zero(), v_W = Vec3::Zero();
+    Quat r_WB = Quat::Identity();
+    Vec3 L_W = Vec3::Zero();
+    Vec3 omega_W = Vec3::Zero();                  // the simulator's own omega, with its mistake
+    std::vector<std::pair<Vec3, Vec3>> forces;    // (p, f) for the next step
+    bool stepped = false;
+};
+
+// The mistakes whose omega is not I^-1(r) L with the right I^-1: a simulator that makes
+// one of them turns in the next step with its own omega. handEulerStep() models one hand
+// step from the workbook's state, so it starts every step from the right omega;
+// chainedStep() gives it the simulator's. (If BodyStepInputs took the step's starting
+// omega, this list and the two extra calls below would go.)
+bool turnsWithOwnOmega(Mistake m)
+{
+    return m == Mistake::TransposedInertia || m == Mistake::BodyInverseInertia ||
+           m == Mistake::InertiaNotInverted || m == Mistake::HalfExtentsForSize;
+}
+
+// One explicit Euler step of one body as the simulator with `model` takes it.
+HandEulerStep chainedStep(const SimBody& b, double h, const ReplayModel& model)
+{
+    BodyStepInputs in;
+    in.h = h;
+    in.mass = b.mass;
+    in.size = b.size;
+    in.x_W = b.x_W;
+    in.v_W = b.v_W;
+    in.q_WB = b.r_WB;
+    in.L_W = b.L_W;
+    in.forces = b.forces;
+    in.firstStep = !b.stepped;
+    HandEulerStep s = handEulerStep(in, model.mistake, model.variant);
+    if (!turnsWithOwnOmega(model.mistake)) return s;
+
+    // The turn with the simulator's omega_n: handEulerStep turns r with I^-1(r_n) L_n of
+    // the right inertia, so give it L' = I(r_n) omega_n (the right I(r_n) = R I0 R^T) and
+    // no loads; only its r_{n+1} is used.
+    const Mat3 R_n = b.r_WB.toRotationMatrix();
+    const Mat3 I_W = R_n * boxInertiaBody(b.size, b.mass) * R_n.transpose();
+    BodyStepInputs turnOnly = in;
+    turnOnly.forces.clear();
+    turnOnly.L_W = I_W * b.omega_W;
+    const Quat r_next = handEulerStep(turnOnly, model.mistake, model.variant).q_WB;
+
+    // R, I^-1 and omega of r_{n+1} with the mistake: start at r_{n+1} without spin
+    // (L = 0, so the turn is none) and let L_{n+1} = 0 + h (L_{n+1}/h) arrive as a couple.
+    BodyStepInputs at = in;
+    at.forces.clear();
+    at.q_WB = r_next;
+    at.L_W = Vec3::Zero();
+    at.couple_W = s.L_W / h;
+    at.firstStep = false;
+    const HandEulerStep t = handEulerStep(at, model.mistake, model.variant);
+    s.q_WB = t.q_WB;
+    s.R_WB = t.R_WB;
+    s.Iinv_W = t.Iinv_W;
+    s.omega_W = t.omega_W;
+    return s;
+}
+
+Answer answerOf(const Vec3& x, const Vec3& v, const Vec3& omega, const Quat& r)
+{
+    return {x.x(), x.y(), x.z(), v.x(), v.y(), v.z(), omega.x(), omega.y(), omega.z(), r.w(), r.x(), r.y(), r.z()};
+}
+
+} // namespace
+
+Answers replay(const Probe& probe, const ReplayModel& model)
+{
+    std::vector<SimBody> bodies;
+    Answers answers;
+    for (const Command& c : probe.commands) {
+        switch (c.kind) {
+        case CommandKind::AddBody: {
+            SimBody b;
+            b.x_W = c.a;
+            b.size = c.b;
+            b.mass = c.mass;
+            bodies.push_back(b);
+            break;
+        }
+        case CommandKind::SetOrientation:
+            bodies[c.body].r_WB = c.q.normalized();   // the protocol's r = q/|q|; omega untouched
+            break;
+        case CommandKind::SetVelocity:
+            bodies[c.body].v_W = c.a;
+            break;
+        case CommandKind::ApplyForce:
+            bodies[c.body].forces.push_back({c.a, c.b});
+            break;
+        case CommandKind::Step:
+            for (SimBody& b : bodies) {
+                const HandEulerStep s = chainedStep(b, c.h, model);
+                b.x_W = s.x_W;
+                b.v_W = s.v_W;
+                b.r_WB = s.q_WB;
+                b.L_W = s.L_W;
+                b.omega_W = s.omega_W;
+                b.forces.clear();   // the loads act for one step
+                b.stepped = true;
+            }
+            break;
+        case CommandKind::State: {
+            const SimBody& b = bodies[c.body];
+            answers.push_back(answerOf(b.x_W, b.v_W, b.omega_W, b.r_WB));
+            break;
+        }
+        }
+    }
+    return answers;
+}
+
+Answers replayWithEngine(const Probe& probe, InertiaConvention convention)
+{
+    SceneDef scene;
+    scene.name = probe.name;
+    scene.integrator = "explicit-euler";
+    scene.inertiaConvention = convention;
+    scene.steps = 0;
+    long steps = 0;
+    for (const Command& c : probe.commands) {
+        switch (c.kind) {
+        case CommandKind::AddBody: {
+            BodyDef b;
+            b.x0_W = c.a;
+            b.size = c.b;
+            b.mass = c.mass;
+            scene.bodies.push_back(b);
+            break;
+        }
+        case CommandKind::SetOrientation:
+            scene.bodies[c.body].q0_WB = c.q.normalized();
+            break;
+        case CommandKind::SetVelocity:
+            scene.bodies[c.body].v0_W = c.a;
+            break;
+        case CommandKind::ApplyForce: {
+            ForceDef f;
+            f.body = c.body;
+            f.p_W = c.a;
+            f.f_W = c.b;
+            f.fromStep = steps;
+            f.toStep = steps + 1;
+            scene.forces.push_back(f);
+            break;
+        }
+        case CommandKind::Step:
+            scene.dt = c.h;
+            ++steps;
+            break;
+        case CommandKind::State:
+            break;
+        }
+    }
+    scene.steps = steps;
+
+    World world(std::move(scene));
+    Answers answers;
+    for (const Command& c : probe.commands) {
+        if (c.kind == CommandKind::Step) world.step();
+        if (c.kind == CommandKind::State) {
+            const BodyState& s = world.states()[c.body];
+            answers.push_back(answerOf(s.x_W, s.v_W, s.omega_W, s.q_WB));
+        }
+    }
+    return answers;
+}
+
+} // namespace rbw::probes
