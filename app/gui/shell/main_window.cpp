@@ -35,6 +35,7 @@
 #include <QTextBrowser>
 #include <QTimer>
 #include <QTreeView>
+#include "app/gui/panels/view/scene_end_bar.h"
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -79,9 +80,14 @@ MainWindow::MainWindow(QWidget* parent)
     centreLayout->setSpacing(0);
     centreLayout->addWidget(alertLabel_);
     centreLayout->addWidget(sceneView_, 1);
+    sceneEnd_ = new SceneEndBar(&session_);   // Play stops at the scene's steps
+    centreLayout->addWidget(sceneEnd_);
     centreLayout->addWidget(scrubber_);
     setCentralWidget(centre);
     connect(scrubber_, &HistoryScrubber::stepRequested, this, &MainWindow::goToStep);
+    connect(sceneEnd_, &SceneEndBar::endReached, this, [this] { setPlaying(false); });
+    connect(sceneEnd_, &SceneEndBar::resetRequested, this, &MainWindow::resetLesson);
+    connect(sceneEnd_, &SceneEndBar::continueRequested, this, [this] { setPlaying(true); });
     connect(scrubber_, &HistoryScrubber::focusReturnRequested, this,
             [this] { sceneView_->setFocus(Qt::OtherFocusReason); });
 
@@ -264,7 +270,7 @@ void MainWindow::resetLesson()
 void MainWindow::onSessionReset()
 {
     const SceneDef& scene = session_.world()->scene();
-    traceModel_->clear();
+    traceModel_->setStart(*session_.world());   // the state at t = 0 before the first step
     docks_.plotPanel->clear();
     QStringList names;
     QList<bool> fixed;
@@ -312,7 +318,7 @@ void MainWindow::onStateChanged()
     if (due & RefreshScheduler::Table) {
         // A new step (or step back, or reset): the table shows its trace.
         if (trace != nullptr) traceModel_->setTrace(*trace, world->scene());
-        else traceModel_->clear();
+        else traceModel_->setStart(*world);
         refresh_.done(RefreshScheduler::Table);
     }
     if (due & RefreshScheduler::Check) updateCheckPanel();
@@ -374,7 +380,11 @@ bool MainWindow::goToStep(long k)
 {
     setPlaying(false);
     if (!session_.isLoaded()) return false;
-    if (k == session_.world()->stepIndex()) return true;
+    if (k == session_.world()->stepIndex()) {
+        // Already there: Enter in the step box still gives the keys back.
+        if (scrubber_->isAncestorOf(QApplication::focusWidget())) sceneView_->setFocus(Qt::OtherFocusReason);
+        return true;
+    }
     QApplication::setOverrideCursor(Qt::WaitCursor);
     const bool reached = session_.goToStep(k);
     QApplication::restoreOverrideCursor();
@@ -399,6 +409,7 @@ void MainWindow::setPlaying(bool playing)
     if (playing && (!session_.isLoaded() || !session_.status().ok)) playing = false;
     if (playing != playTimer_->isActive()) {
         if (playing) {
+            sceneEnd_->playStarted();
             clock_.start();
             playTimer_->start();
         } else {
@@ -415,10 +426,13 @@ void MainWindow::onPlayTick()
     const World* world = session_.world();
     if (world == nullptr) return;
     const double h = world->scene().dt;
-    const int due = clock_.stepsDue(h);
-    if (due == 0) return;   // less than one step owed to real time yet
-    const int taken = session_.advance(due, clock_.budgetMs());
-    clock_.stepsTaken(due, taken, h);
+    // No step past the scene's end (SceneEndBar), then stop there if it was reached.
+    const int due = sceneEnd_->stepsAllowed(clock_.stepsDue(h));
+    if (due > 0) {
+        const int taken = session_.advance(due, clock_.budgetMs());
+        clock_.stepsTaken(due, taken, h);
+    }
+    sceneEnd_->checkEnd();
 }
 
 void MainWindow::showKeys() { showKeysDialog(this, shortcutActions()); }

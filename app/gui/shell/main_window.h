@@ -26,6 +26,8 @@ class QTreeView;
 
 namespace rbw {
 
+class SceneEndBar;
+
 class AccuracyPanel;
 class BodyPlotPanel;
 class CheckPanel;
@@ -138,6 +140,7 @@ private:
 
     Session session_;
     LessonController* lessons_ = nullptr;
+    SceneEndBar* sceneEnd_ = nullptr;
     TraceModel* traceModel_ = nullptr;
     SceneView* sceneView_ = nullptr;
     ShellDocks docks_;

@@ -2,6 +2,8 @@
 
 #include "app/core/playback_clock.h"
 #include "app/core/session.h"
+#include "app/gui/style/field_keys.h"
+#include "app/gui/style/number_text.h"
 #include "physics/engine/integrator_registry.h"
 
 #include <QCheckBox>
@@ -57,7 +59,8 @@ ParameterBar::ParameterBar(Session* session, QWidget* parent)
     auto* validator = new QDoubleValidator(1e-9, 1e3, 12, dtBox_);
     validator->setNotation(QDoubleValidator::ScientificNotation);
     dtBox_->setValidator(validator);
-    dtBox_->setMinimumContentsLength(7);
+    dtBox_->setMinimumContentsLength(9);
+    dtBox_->setInsertPolicy(QComboBox::NoInsert);
     connect(dtBox_->lineEdit(), &QLineEdit::editingFinished, this, &ParameterBar::onDtEdited);
     // Picking a listed value applies it as Enter would.
     connect(dtBox_, &QComboBox::activated, this, &ParameterBar::onDtEdited);
@@ -103,10 +106,11 @@ ParameterBar::ParameterBar(Session* session, QWidget* parent)
     syncFromSession();
 
     // Enter and Escape in the boxes that take typed text hand the keys back (see
-    // setFocusReturnTarget); so does a pick in a list.
-    for (QObject* o : {static_cast<QObject*>(dtBox_->lineEdit()), static_cast<QObject*>(restitutionBox_),
-                       static_cast<QObject*>(frictionBox_)}) {
-        o->installEventFilter(this);
+    // setFocusReturnTarget); so does a pick in a list. The filter sits on the box itself:
+    // a combo box passes its keys to its line edit directly, unseen by a filter there.
+    for (QWidget* box : {static_cast<QWidget*>(dtBox_), static_cast<QWidget*>(restitutionBox_),
+                         static_cast<QWidget*>(frictionBox_)}) {
+        fieldKeys_.append(new FieldKeys(box, focusTarget_, [this] { discardTyping(); }));
     }
     for (QComboBox* box : {speedBox_, integratorBox_}) {
         connect(box, &QComboBox::activated, this, &ParameterBar::returnFocus);
@@ -122,31 +126,23 @@ void ParameterBar::returnFocus()
     });
 }
 
-bool ParameterBar::eventFilter(QObject* watched, QEvent* event)
+void ParameterBar::setFocusReturnTarget(QWidget* target)
 {
-    if (event->type() == QEvent::KeyPress && focusTarget_ != nullptr) {
-        const int key = static_cast<QKeyEvent*>(event)->key();
-        if (key == Qt::Key_Escape) {
-            // Discard what was typed. A box applies its text when it loses the focus, so
-            // the texts are reset to the session's values first, and the focus moves
-            // while the bar ignores its controls (syncing_).
-            syncing_ = true;
-            if (session_->isLoaded()) {
-                const SceneDef& scene = session_->world()->scene();
-                restitutionBox_->setValue(scene.restitution);
-                frictionBox_->setValue(scene.friction);
-                dtBox_->setEditText(QString::number(scene.dt, 'g', 10));
-            }
-            focusTarget_->setFocus(Qt::OtherFocusReason);
-            syncing_ = false;
-            syncFromSession();
-            return true;
-        }
-        if (key == Qt::Key_Return || key == Qt::Key_Enter) {
-            returnFocus();   // the box applies the value, then the focus moves
-        }
-    }
-    return QToolBar::eventFilter(watched, event);
+    focusTarget_ = target;
+    for (FieldKeys* keys : fieldKeys_) keys->setTarget(target);
+}
+
+void ParameterBar::discardTyping()
+{
+    // What was typed goes; the focus leaves next (FieldKeys), and a box that applies
+    // its text on focus-out then applies the session's own value, which changes nothing.
+    if (!session_->isLoaded()) return;
+    syncing_ = true;
+    const SceneDef& scene = session_->world()->scene();
+    restitutionBox_->setValue(scene.restitution);
+    frictionBox_->setValue(scene.friction);
+    dtBox_->setEditText(shortNumber(scene.dt));
+    syncing_ = false;
 }
 
 double ParameterBar::speed() const
@@ -197,7 +193,7 @@ void ParameterBar::syncFromSession()
     syncing_ = true;
     const SceneDef& scene = world->scene();
     // Not while the student is typing a value.
-    if (!dtBox_->lineEdit()->hasFocus()) dtBox_->setEditText(QString::number(scene.dt, 'g', 10));
+    if (!dtBox_->lineEdit()->hasFocus()) dtBox_->setEditText(shortNumber(scene.dt));
     integratorBox_->setCurrentText(QString::fromStdString(scene.integrator));
     // A lesson that compares integrators side by side sets one per body: the box
     // would change only the bodies without their own.
@@ -224,7 +220,8 @@ void ParameterBar::onDtEdited()
 {
     if (syncing_ || !session_->isLoaded()) return;
     bool ok = false;
-    const double h = dtBox_->currentText().toDouble(&ok);
+    // The box shows h in 6 figures ("0.0166667" for 1/60): that text stands for the exact h.
+    const double h = fieldNumber(dtBox_->currentText(), session_->world()->scene().dt, &ok);
     if (ok && h == session_->world()->scene().dt) return;
     QString error;
     if (!ok || !session_->setDt(h, &error)) {

@@ -6,6 +6,7 @@
 // session's: it paces Play, so the bar only reports it (speedChanged).
 #pragma once
 
+#include <QList>
 #include <QToolBar>
 
 class QCheckBox;
@@ -14,6 +15,7 @@ class QDoubleSpinBox;
 
 namespace rbw {
 
+class FieldKeys;
 class Session;
 
 class ParameterBar : public QToolBar {
@@ -41,11 +43,10 @@ public:
     // in h, c or μ, and a pick in a drop-down list, hand the keyboard focus to this
     // widget (the 3D view), so S, Space and the arrows step and play again instead of
     // typing into the box.
-    void setFocusReturnTarget(QWidget* target) { focusTarget_ = target; }
+    // The keys of the typed boxes are FieldKeys (app/gui/style/field_keys.h), the one
+    // Enter/Escape rule of every field.
+    void setFocusReturnTarget(QWidget* target);
     QWidget* focusReturnTarget() const { return focusTarget_; }
-
-protected:
-    bool eventFilter(QObject* watched, QEvent* event) override;
 
 signals:
     void speedChanged(double speed);
@@ -69,8 +70,10 @@ private:
     QDoubleSpinBox* frictionBox_ = nullptr;
     bool syncing_ = false;   // the controls are being set from the session
     QWidget* focusTarget_ = nullptr;
+    QList<FieldKeys*> fieldKeys_;   // on h, c and μ
 
     void returnFocus();
+    void discardTyping();   // Escape: the boxes show the session's values again
 };
 
 } // namespace rbw

@@ -23,6 +23,7 @@
 #include <QTextBrowser>
 #include <QTimer>
 #include <QTreeView>
+#include "app/gui/panels/quantities/trace_view.h"
 
 #include <algorithm>
 
@@ -59,35 +60,9 @@ ShellDocks buildDocks(QMainWindow* window, const QList<Lesson>& lessons, TraceMo
     window->addDockWidget(Qt::LeftDockWidgetArea, textDock);
     window->splitDockWidget(lessonsDock, textDock, Qt::Vertical);
 
-    d.traceView = new QTreeView;
-    d.traceView->setObjectName("traceView");
-    d.traceView->setModel(traceModel);
+    d.traceView = new TraceView(traceModel);   // columns sized to their values (issue 20)
     d.bodySwatches = new BodyColourDelegate(d.traceView);
     d.traceView->setItemDelegateForColumn(0, d.bodySwatches);
-    d.traceView->setAlternatingRowColors(true);
-    d.traceView->setSelectionBehavior(QAbstractItemView::SelectRows);
-    d.traceView->setSelectionMode(QAbstractItemView::ExtendedSelection);
-    // Matrices take three lines (one row each), so rows differ in height.
-    d.traceView->setUniformRowHeights(false);
-    d.traceView->setWordWrap(false);
-    d.traceView->setIndentation(12);   // three levels (stage, body, row) without losing the values' room
-    d.traceView->header()->setStretchLastSection(true);
-    // The formula is typeset in the pane below the table, not shown as raw LaTeX.
-    d.traceView->setColumnHidden(TraceModel::FormulaColumn, true);
-    QObject::connect(traceModel, &QAbstractItemModel::modelReset, d.traceView, [view = d.traceView] {
-        view->expandAll();
-        for (int c = 0; c < TraceModel::FormulaColumn; ++c) {
-            view->resizeColumnToContents(c);
-            // Long symbols (the J denominator terms) must not push the values off screen.
-            if (c == TraceModel::SymbolColumn) view->setColumnWidth(c, std::min(view->columnWidth(c), 48));
-            // Nor long names (a manifold point's group: pair, feature, point k of n): at most
-            // a third of the table, elided, the whole name in the tooltip.
-            if (c == TraceModel::QuantityColumn) {
-                const int most = std::max(170, view->viewport()->width() / 3);
-                view->setColumnWidth(c, std::min(view->columnWidth(c), most));
-            }
-        }
-    });
     d.formulaPane = new FormulaPane;
     d.formulaPane->setObjectName("formulaPane");
     QObject::connect(d.traceView->selectionModel(), &QItemSelectionModel::currentRowChanged, d.formulaPane,
