@@ -34,7 +34,9 @@ const std::vector<std::pair<std::string_view, std::vector<std::string_view>>>& d
         {q::relative_velocity.id, {q::velocity_a.id, q::velocity_b.id}},
         {q::normal_velocity.id, {q::relative_velocity.id}},
         {q::numerator.id, {q::normal_velocity.id}},
-        {q::denominator.id, {q::x_a.id, q::x_b.id}},
+        {q::rotational_a.id, {q::x_a.id}},
+        {q::rotational_b.id, {q::x_b.id}},
+        {q::denominator.id, {q::rotational_a.id, q::rotational_b.id}},
         {q::impulse.id, {q::numerator.id, q::denominator.id}},
     };
     return all;

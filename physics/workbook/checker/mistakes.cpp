@@ -54,6 +54,19 @@ const std::vector<MistakeInfo>& mistakeCatalogue()
          3},
         {Mistake::QuaternionWithoutHalfAngle, "quaternion-without-half-angle", "r0 = (cos th, n sin th)",
          "A rotation by th about n is the quaternion (cos th/2, n sin th/2); the half angle was left out."},
+        {Mistake::InertiaHalfExtentsWithoutThird, "inertia-half-extents-without-third",
+         "I0 = M diag(b^2 + c^2, a^2 + c^2, a^2 + b^2), a, b, c half extents",
+         "With the half extents the box's inertia is M/3 diag(b^2 + c^2, ...), not M diag(...): "
+         "I0 = M/12 diag(b^2 + c^2, a^2 + c^2, a^2 + b^2) with the full edges."},
+        {Mistake::OmegaAccumulated, "omega-accumulated", "omega' = omega + I^-1 L'",
+         "omega is not accumulated: it is the new I^-1 times the new L, omega' = I^-1 L'."},
+        {Mistake::NoSeparatingCheck, "no-separating-check", "J applied although v_rel.n > 0",
+         "The bodies separate (v_rel . n > 0): no impulse, J = 0."},
+        {Mistake::ImpulseLeverArmFromOrigin, "impulse-lever-arm-from-origin", "x_a = p,  x_b = p",
+         "The impulse's lever arms start at the centres of mass: x_a = p - x_A, x_b = p - x_B."},
+        {Mistake::ImpulseDenominatorMissingCross, "impulse-denominator-missing-cross", "... + (I_A^-1 (x_a x n)) . n + ...",
+         "The rotational term of the denominator is [(I^-1 (x_a x n)) x x_a] . n: the cross product with x_a "
+         "was left out."},
     };
     return all;
 }
@@ -75,6 +88,8 @@ namespace {
 Mat3 bodyInertia(const Vec3& size, double M, Mistake m, int variant)
 {
     Mat3 I0 = boxInertiaBody(m == Mistake::HalfExtentsForSize ? Vec3(0.5 * size) : size, M);
+    // inertia-half-extents-without-third: M diag(...) of a/2, b/2, c/2 = 12/4 = 3 times I0
+    if (m == Mistake::InertiaHalfExtentsWithoutThird) I0 *= 3.0;
     if (m == Mistake::InertiaAxesSwapped) {
         static const int pairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
         const int i = pairs[variant % 3][0], j = pairs[variant % 3][1];
@@ -135,6 +150,14 @@ Vec3 angularVelocity(const Mat3& Iinv_W, const Mat3& R, const Mat3& I0, const Ma
     return Iinv_W * L;
 }
 
+// The rotational term [(I^-1 (x x n)) x x] . n;  impulse-denominator-missing-cross: (I^-1 (x x n)) . n
+double rotationalTerm(const Mat3& Iinv, const Vec3& x, const Vec3& n, Mistake m)
+{
+    const Vec3 Iinv_xn = Iinv * x.cross(n);
+    if (m == Mistake::ImpulseDenominatorMissingCross) return Iinv_xn.dot(n);
+    return Iinv_xn.cross(x).dot(n);
+}
+
 // v_p = v + omega x (p - x);  point-velocity-without-rotation: v;
 // point-velocity-cross-reversed: v + (p - x) x omega;  point-velocity-lever-arm-from-origin: v + omega x p
 Vec3 pointVelocityOf(const Vec3& v, const Vec3& omega, const Vec3& p, const Vec3& x, Mistake m)
@@ -192,6 +215,8 @@ HandEulerStep handEulerStep(const BodyStepInputs& in, Mistake m, int variant)
     s.R_WB = s.q_WB.toRotationMatrix();
     s.Iinv_W = worldInverseInertia(s.R_WB, s.I0inv_B, in.convention, m);
     s.omega_W = angularVelocity(s.Iinv_W, s.R_WB, s.I0_B, s.I0inv_B, s.L_W, m);
+    // omega-accumulated: omega' = omega_n + I^-1 L'
+    if (m == Mistake::OmegaAccumulated) s.omega_W += omega0;
     // Step 8: p = x + R p_B,  v_p = v + omega x (p - x)
     for (const Vec3& p_B : in.probes_B) {
         const Vec3 p = s.x_W + s.R_WB * p_B;
@@ -235,9 +260,10 @@ HandImpulse handImpulse(const ContactInputs& in, Mistake m)
 {
     HandImpulse r;
     const Vec3& n = in.g.n_W;
-    // x_a = p - x_A,  x_b = p - x_B
-    r.x_a = in.g.p_W - in.x_A;
-    r.x_b = in.g.p_W - in.x_B;
+    // x_a = p - x_A,  x_b = p - x_B;  impulse-lever-arm-from-origin: x_a = x_b = p
+    const bool fromOrigin = m == Mistake::ImpulseLeverArmFromOrigin;
+    r.x_a = fromOrigin ? in.g.p_W : Vec3(in.g.p_W - in.x_A);
+    r.x_b = fromOrigin ? in.g.p_W : Vec3(in.g.p_W - in.x_B);
     // v_A(p) = v_A + omega_A x x_a (and B)
     r.velocity_a = in.v_A + in.omega_A.cross(r.x_a);
     r.velocity_b = in.v_B + in.omega_B.cross(r.x_b);
@@ -251,14 +277,15 @@ HandImpulse handImpulse(const ContactInputs& in, Mistake m)
                                                               : 1.0 + in.restitution;
     r.numerator = -bounce * r.v_rel_n;
     // 1/M_A + 1/M_B + [(I_A^-1 (x_a x n)) x x_a] . n + [...]_B;  impulse-linear-only: 1/M_A + 1/M_B
+    // (impulse-linear-only computes the terms right but leaves them out of the sum)
+    r.rotational_a = rotationalTerm(in.Iinv_A, r.x_a, n, m);
+    r.rotational_b = rotationalTerm(in.Iinv_B, r.x_b, n, m);
     r.denominator = in.invM_A + in.invM_B;
-    if (m != Mistake::ImpulseLinearOnly) {
-        r.denominator += (in.Iinv_A * r.x_a.cross(n)).cross(r.x_a).dot(n) +
-                         (in.Iinv_B * r.x_b.cross(n)).cross(r.x_b).dot(n);
-    }
+    if (m != Mistake::ImpulseLinearOnly) r.denominator += r.rotational_a + r.rotational_b;
     // J = numerator / denominator; no impulse when separating (v_rel . n > 0), unless the
-    // student's own v_rel says otherwise
-    r.J = (m == Mistake::None && r.v_rel_n > 0.0) ? 0.0 : r.numerator / r.denominator;
+    // student forgot the check (no-separating-check) or a mistake of theirs flipped v_rel
+    const bool checksSeparation = m != Mistake::NoSeparatingCheck && m != Mistake::RelativeVelocityReversed;
+    r.J = (checksSeparation && r.v_rel_n > 0.0) ? 0.0 : r.numerator / r.denominator;
     return r;
 }
 
@@ -272,6 +299,8 @@ bool HandImpulse::value(std::string_view id, TraceValue& out) const
         {&q::relative_velocity, v_rel},
         {&q::normal_velocity, v_rel_n},
         {&q::numerator, numerator},
+        {&q::rotational_a, rotational_a},
+        {&q::rotational_b, rotational_b},
         {&q::denominator, denominator},
         {&q::impulse, J},
     };

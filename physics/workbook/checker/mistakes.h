@@ -45,6 +45,11 @@ enum class Mistake {
     RestitutionOneMinus,          // numerator -(1 - c) v_rel.n
     InertiaAxesSwapped,           // two of I0's moments exchanged (variant 0: x-y, 1: y-z, 2: x-z)
     QuaternionWithoutHalfAngle,   // initial r = (cos th, n sin th) = r0^2 (step 0)
+    InertiaHalfExtentsWithoutThird, // I0 = M diag(b^2 + c^2, ...) of the half extents (3x)
+    OmegaAccumulated,             // omega' = omega + I^-1 L'
+    NoSeparatingCheck,            // J applied although v_rel.n > 0
+    ImpulseLeverArmFromOrigin,    // x_a = p, x_b = p in the impulse
+    ImpulseDenominatorMissingCross, // (I^-1 (x_a x n)) . n in the denominator
 };
 
 struct MistakeInfo {
@@ -113,6 +118,8 @@ struct HandImpulse {
     Vec3 v_rel;                  // relative_velocity
     double v_rel_n = 0.0;        // normal_velocity
     double numerator = 0.0;      // numerator
+    double rotational_a = 0.0;   // rotational_a: [(I_A^-1 (x_a x n)) x x_a] . n
+    double rotational_b = 0.0;   // rotational_b
     double denominator = 0.0;    // denominator
     double J = 0.0;              // impulse (0 when separating)
 

@@ -43,7 +43,7 @@ private slots:
         const std::vector<rbw::AnswerResult> r = rbw::checkAnswers(*s.before, s.trace, answers);
         for (size_t i = 0; i < r.size(); ++i) {
             QVERIFY2(r[i].verdict == Verdict::Correct, answers[i].quantity.c_str());
-            QVERIFY(r[i].mistakes.empty());
+            QVERIFY(r[i].mistakes.empty() && r[i].possibleMistakes.empty());
         }
     }
 
@@ -138,15 +138,27 @@ private slots:
         const rbw::AnswerResult onePlus =
             rbw::checkAnswers(*s.before, s.trace, {answer("impulse", -1, {32.0 / 27.0}, 0)}).front();
         QVERIFY(mayBe(onePlus, "impulse-without-one-plus"));
-        // numerator 4 (right), denominator 1.5 = 1/M_A + 1/M_B (linear only), J = 8/3: the
-        // denominator is red and named; J follows from it.
-        const std::vector<rbw::AnswerResult> written = rbw::checkAnswers(
-            *s.before, s.trace,
-            {answer("numerator", -1, {4.0}, 0), answer("denominator", -1, {1.5}, 0), answer("impulse", -1, {8.0 / 3.0}, 0)});
-        QCOMPARE(written[0].verdict, Verdict::Correct);
-        QCOMPARE(written[1].verdict, Verdict::Wrong);
-        QVERIFY(has(written[1], "impulse-linear-only"));
-        QCOMPARE(written[2].verdict, Verdict::FollowsFromEarlier);
+        // numerator 4 (right), denominator 1.5 = 1/M_A + 1/M_B, J = 8/3: the denominator is
+        // red and J follows from it. 1.5 is also the denominator without the cross product
+        // with x_a (A's term (I^-1 (x_a x n)) . n = 0 here): both possible, until the right
+        // rotational_a = 3/16 is written, which contradicts the missing cross product.
+        for (bool withTerm : {false, true}) {
+            std::vector<Answer> answers = {answer("numerator", -1, {4.0}, 0)};
+            if (withTerm) answers.push_back(answer("rotational_a", -1, {0.1875}, 0));
+            answers.push_back(answer("denominator", -1, {1.5}, 0));
+            answers.push_back(answer("impulse", -1, {8.0 / 3.0}, 0));
+            const std::vector<rbw::AnswerResult> written = rbw::checkAnswers(*s.before, s.trace, answers);
+            QCOMPARE(rbw::test::count(written, Verdict::Wrong), 1);
+            const rbw::AnswerResult& den = written[answers.size() - 2];
+            QCOMPARE(den.verdict, Verdict::Wrong);
+            if (withTerm) {
+                QVERIFY(has(den, "impulse-linear-only"));
+                QVERIFY(den.possibleMistakes.empty());
+            } else {
+                QVERIFY(mayBe(den, "impulse-linear-only") && mayBe(den, "impulse-denominator-missing-cross"));
+            }
+            QCOMPARE(written.back().verdict, Verdict::FollowsFromEarlier);
+        }
         const rbw::AnswerResult right =
             rbw::checkAnswers(*s.before, s.trace, {answer("impulse", -1, {2.370}, 0)}).front();
         QCOMPARE(right.verdict, Verdict::Correct);

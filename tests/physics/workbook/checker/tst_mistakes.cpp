@@ -158,6 +158,14 @@ private slots:
         // diag(9.836066, 4.8, 4.411765) = I0^-1 of the right I0, so omega' = I0^-1 L' again.
         QTest::newRow("inertia-axes-swapped omega") << Mistake::InertiaAxesSwapped << "angular_velocity" << -1
                                                     << QList<double>{-4.918033, 2.4, -1.764706};
+        // M diag(b^2 + c^2, ...) of the half extents 0.5, 0.3, 0.25: 2 diag(0.1525, 0.3125,
+        // 0.34), three times I0; so omega' is a third of (-2.4, 4.918033, -1.764706).
+        QTest::newRow("inertia-half-extents-without-third I0") << Mistake::InertiaHalfExtentsWithoutThird
+                                                               << "inertia_body" << -1
+                                                               << QList<double>{0.305, 0, 0, 0, 0.625, 0, 0, 0, 0.68};
+        QTest::newRow("inertia-half-extents-without-third omega") << Mistake::InertiaHalfExtentsWithoutThird
+                                                                  << "angular_velocity" << -1
+                                                                  << QList<double>{-0.8, 1.639344, -0.588235};
     }
 
     // inertia-axes-swapped has three variants: the pair of axes exchanged.
@@ -305,6 +313,56 @@ private slots:
                                                   << QList<double>{32.0 / 27.0};
         // numerator -(1 - c) v_rel.n = -(1 - 1)(-2) = 0 at c = 1: J = 0
         QTest::newRow("restitution-one-minus") << Mistake::RestitutionOneMinus << "impulse" << QList<double>{0.0};
+        // x_a = x_b = p = (1.02, 0.5, 0): x x n = (0, 0, 0.5) for both; A: (0, 0, 0.375) x p . n
+        // = 0.1875 (as right, x_A is along n); B: (0, 0, 3) x p = (-1.5, 3.06, 0), . n = 1.5:
+        // denominator 0.5 + 1 + 0.1875 + 1.5 = 51/16, J = 4 / (51/16) = 64/51
+        QTest::newRow("impulse-lever-arm-from-origin rotational_b") << Mistake::ImpulseLeverArmFromOrigin
+                                                                    << "rotational_b" << QList<double>{1.5};
+        QTest::newRow("impulse-lever-arm-from-origin J") << Mistake::ImpulseLeverArmFromOrigin << "impulse"
+                                                         << QList<double>{64.0 / 51.0};
+        // (I_A^-1 (x_a x n)) . n = (0, 0, 0.375) . n = 0, B's x_b x n = 0: denominator 1.5,
+        // J = 8/3, the linear-only number (the terms are right: rotational_a 0.1875 for linear-only)
+        QTest::newRow("impulse-denominator-missing-cross rotational_a") << Mistake::ImpulseDenominatorMissingCross
+                                                                        << "rotational_a" << QList<double>{0.0};
+        QTest::newRow("impulse-denominator-missing-cross J") << Mistake::ImpulseDenominatorMissingCross << "impulse"
+                                                             << QList<double>{8.0 / 3.0};
+        QTest::newRow("impulse-linear-only rotational_a") << Mistake::ImpulseLinearOnly << "rotational_a"
+                                                          << QList<double>{0.1875};
+    }
+
+    // The boxes of lesson 3 moving apart: v_A = (-1, 0, 0), v_B = (1, 0, 0), v_rel.n = +2:
+    // no impulse (J = 0); without the check J = -(1 + 1)(2) / (27/16) = -64/27.
+    void noSeparatingCheck()
+    {
+        rbw::ContactInputs in = lesson3();
+        in.v_A = Vec3(-1, 0, 0);
+        in.v_B = Vec3(1, 0, 0);
+        const QString wrong =
+            rbw::test::mismatch(impulseValue(rbw::handImpulse(in, Mistake::NoSeparatingCheck), "impulse"), {-64.0 / 27.0}, 1e-12);
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong));
+        const QString right = rbw::test::mismatch(impulseValue(rbw::handImpulse(in), "impulse"), {0.0}, 1e-12);
+        QVERIFY2(right.isEmpty(), qPrintable(right));
+        // Negative control: approaching (lesson 3 as it is), the model is the right impulse.
+        const QString approaching = rbw::test::mismatch(
+            impulseValue(rbw::handImpulse(lesson3(), Mistake::NoSeparatingCheck), "impulse"), {64.0 / 27.0}, 1e-12);
+        QVERIFY2(approaching.isEmpty(), qPrintable(approaching));
+    }
+
+    // omega' = omega_n + I^-1 L' needs a spin: the quaternion case below (r = 1, omega0 =
+    // (1, 0, 0), no force, h = 0.1): r' turns about x, which I^-1 L' = R I0^-1 R^T (L_x, 0, 0)
+    // leaves alone: right omega' = (1, 0, 0), accumulated (2, 0, 0).
+    void omegaAccumulated()
+    {
+        rbw::BodyStepInputs in = table21();
+        in.q_WB = Quat::Identity();
+        in.forces.clear();
+        in.h = 0.1;
+        in.L_W = Vec3(0.61 / 6.0, 0, 0);
+        const QString wrong = rbw::test::mismatch(
+            handValue(rbw::handEulerStep(in, Mistake::OmegaAccumulated), "angular_velocity"), {2, 0, 0}, 1e-9);
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong));
+        const QString right = rbw::test::mismatch(handValue(rbw::handEulerStep(in), "angular_velocity"), {1, 0, 0}, 1e-9);
+        QVERIFY2(right.isEmpty(), qPrintable(right));
     }
 
     // At c = 0.5, 1 - c = c: restitution-one-minus and impulse-without-one-plus give one
@@ -334,7 +392,7 @@ private slots:
     // Every model has a stable id, an equation and an explanation, and is found by its id.
     void catalogue()
     {
-        QCOMPARE(rbw::mistakeCatalogue().size(), size_t(20));   // 15 of issue 10, 5 of issue 21
+        QCOMPARE(rbw::mistakeCatalogue().size(), size_t(25));   // 15 of issue 10, 10 of issue 21
         for (const rbw::MistakeInfo& m : rbw::mistakeCatalogue()) {
             QVERIFY(rbw::findMistake(m.id) == &m);
             QVERIFY(std::strlen(m.equation) > 0 && std::strlen(m.explanation) > 0);
