@@ -55,7 +55,10 @@ void TestApp::opensOnLesson1()
     QVERIFY(w.openLesson("01-one-step"));
     QCOMPARE(w.currentLessonId(), QString("01-one-step"));
     QVERIFY(w.windowTitle().contains("One Euler step (Table 2.1)"));
-    QCOMPARE(w.traceModel()->rowCount(), 0);   // nothing computed before the first Step
+    // Before the first Step the table shows the state at t = 0 (issue 20: never blank),
+    // not a step's trace.
+    QVERIFY(w.traceModel()->showsStart());
+    QVERIFY(w.traceModel()->rowCount() > 0);
     // The default layout fits a 1366x768 screen.
     QVERIFY(w.frameGeometry().width() <= 1366 && w.frameGeometry().height() <= 768);
 }
@@ -118,10 +121,11 @@ void TestApp::resetClearsTrace()
     QVERIFY(w.openLesson("01-one-step"));
     w.findChild<QAction*>("actionStep")->trigger();
     QVERIFY(w.traceModel()->rowCount() > 0);
+    QVERIFY(!w.traceModel()->showsStart());   // step 0's trace
     QCOMPARE(w.world()->stepIndex(), 1L);
     w.findChild<QAction*>("actionReset")->trigger();
     QCOMPARE(w.world()->stepIndex(), 0L);
-    QCOMPARE(w.traceModel()->rowCount(), 0);
+    QVERIFY(w.traceModel()->showsStart());    // the trace is gone: the state at t = 0 again
     QCOMPARE(w.plotPanel()->sampleCount(), 1);
 }
 
