@@ -4,6 +4,7 @@
 #include "app/exercise/value_grid.h"
 #include "app/core/lesson_catalogue.h"
 #include "app/scene/scene_loader.h"
+#include "app/scene/scene_format.h"
 #include "physics/engine/quantity_catalogue.h"
 
 #include <QDir>
@@ -194,8 +195,14 @@ ExerciseLoadResult loadExercise(const QString& lesson)
     if (!requireValue.isUndefined() && !requireValue.isArray()) errors << fmt(spec, "require", "must be a list");
     const QJsonArray requireList = requireValue.toArray();
     QStringList names;
-    for (const QJsonValue& b : spec.scene.value("bodies").toArray()) names << b.toObject().value("name").toString();
-    for (const QJsonValue& p : spec.scene.value("planes").toArray()) names << p.toObject().value("name").toString();
+    using sceneformat::Key;
+    using sceneformat::key;
+    for (const QJsonValue& b : spec.scene.value(key(Key::Bodies)).toArray()) {
+        names << b.toObject().value(key(Key::BodyName)).toString();
+    }
+    for (const QJsonValue& p : spec.scene.value(key(Key::Planes)).toArray()) {
+        names << p.toObject().value(key(Key::PlaneName)).toString();
+    }
     for (qsizetype i = 0; i < requireList.size(); ++i) {
         const QString at = QStringLiteral("require[%1]").arg(i);
         const QJsonObject r = requireList[i].toObject();
