@@ -4,6 +4,7 @@
 #include "app/exercise/value_grid.h"
 #include "app/core/lesson_catalogue.h"
 #include "app/scene/scene_loader.h"
+#include "app/scene/strict_json_scan.h"
 #include "app/scene/scene_format.h"
 #include "physics/engine/quantity_catalogue.h"
 
@@ -59,7 +60,14 @@ ExerciseLoadResult loadExercise(const QString& lesson)
         return result;
     }
     QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
+    const QByteArray bytes = file.readAll();
+    const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
+    // A key given twice (QJsonDocument keeps the last silently), NaN or 1e999: the
+    // scene loader's strict scan, with the JSON path.
+    if (const std::optional<scenefile::RawFinding> f = scenefile::scanParsed(bytes, parseError)) {
+        result.errors << fmt(spec, f->path, f->reason);
+        return result;
+    }
     if (parseError.error != QJsonParseError::NoError || !doc.isObject()) {
         result.errors << fmt(spec, "(file)",
                              parseError.error != QJsonParseError::NoError
