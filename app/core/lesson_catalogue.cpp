@@ -1,6 +1,7 @@
 #include "app/core/lesson_catalogue.h"
 
 #include "app/core/source_root.h"
+#include "app/scene/scene_format.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -43,9 +44,12 @@ QList<Lesson> lessonCatalogue(const QString& directory)
         if (!file.open(QIODevice::ReadOnly)) {
             continue;
         }
+        // The scene's own name and description (the scene-format table's keys).
+        const QString nameKey = sceneformat::key(sceneformat::Key::Name);
+        const QString descriptionKey = sceneformat::key(sceneformat::Key::Description);
         const QJsonObject o = QJsonDocument::fromJson(file.readAll()).object();
         const QString textPath = dir.filePath(id + "/lesson.md");
-        lessons.append(Lesson{id, o.value("name").toString(id), o.value("description").toString(), scenePath,
+        lessons.append(Lesson{id, o.value(nameKey).toString(id), o.value(descriptionKey).toString(), scenePath,
                               textPath, false});
         // Variants: the folder's other scene files, e.g. 07-bounce/impulses.json.
         const QDir folder(dir.filePath(id));
@@ -62,7 +66,7 @@ QList<Lesson> lessonCatalogue(const QString& directory)
             const QJsonObject vo = QJsonDocument::fromJson(v.readAll()).object();
             // Its own text NAME.md beside NAME.json, else the lesson's.
             const QString ownText = folder.filePath(QFileInfo(variant).completeBaseName() + QStringLiteral(".md"));
-            lessons.append(Lesson{variantId, vo.value("name").toString(variantId), vo.value("description").toString(),
+            lessons.append(Lesson{variantId, vo.value(nameKey).toString(variantId), vo.value(descriptionKey).toString(),
                                   folder.filePath(variant), QFile::exists(ownText) ? ownText : textPath, true});
         }
     }

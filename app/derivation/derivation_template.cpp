@@ -1,6 +1,7 @@
 #include "app/derivation/derivation_template.h"
 
 #include "physics/engine/quantities.h"
+#include "physics/engine/scene_words.h"
 
 #include "app/derivation/trace_lookup.h"
 
@@ -9,6 +10,15 @@
 namespace rbw {
 
 namespace {
+
+// "standard or course-template": the words of E for a message.
+template <typename E>
+QString wordsText()
+{
+    QStringList words;
+    for (std::string_view w : sceneWords<E>()) words << QString::fromLatin1(w.data(), static_cast<qsizetype>(w.size()));
+    return words.join(QStringLiteral(" or "));
+}
 
 const QStringList& sceneKeys()
 {
@@ -65,17 +75,18 @@ void checkPlaceholders(const QString& text, const QString& where, QStringList& e
 QString checkCondition(const QString& cond)
 {
     if (cond.isEmpty()) return QStringLiteral("@if needs a condition");
+    // The words are the scene file's (physics/engine/scene_words.h).
     if (cond.startsWith(QLatin1String("convention="))) {
         const QString v = cond.mid(11);
-        if (v != QLatin1String("standard") && v != QLatin1String("course-template")) {
-            return QStringLiteral("unknown convention '%1' (standard or course-template)").arg(v);
+        if (!sceneWordValue<InertiaConvention>(v.toStdString())) {
+            return QStringLiteral("unknown convention '%1' (%2)").arg(v, wordsText<InertiaConvention>());
         }
         return QString();
     }
     if (cond.startsWith(QLatin1String("model="))) {
         const QString v = cond.mid(6);
-        if (v != QLatin1String("course") && v != QLatin1String("manifold")) {
-            return QStringLiteral("unknown contact model '%1' (course or manifold)").arg(v);
+        if (!sceneWordValue<ContactModel>(v.toStdString())) {
+            return QStringLiteral("unknown contact model '%1' (%2)").arg(v, wordsText<ContactModel>());
         }
         return QString();
     }

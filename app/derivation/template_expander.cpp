@@ -4,6 +4,7 @@
 #include "app/derivation/derivation_page.h"
 #include "app/derivation/integrator_sections.h"
 #include "physics/engine/quantities.h"
+#include "physics/engine/scene_words.h"
 
 #include <QRegularExpression>
 
@@ -126,11 +127,9 @@ bool TemplateExpander::condition(const TemplateNode& n, const ExpansionContext& 
         const InertiaConvention convention = b >= 0 && b < static_cast<int>(scene_.bodies.size())
                                                  ? scene_.conventionOf(b)
                                                  : scene_.inertiaConvention;
-        const bool courseTemplate = convention == InertiaConvention::CourseTemplate;
-        value = (cond.mid(11) == QLatin1String("course-template")) == courseTemplate;
+        value = sceneWordValue<InertiaConvention>(cond.mid(11).toStdString()) == convention;
     } else if (cond.startsWith(QLatin1String("model="))) {
-        const bool manifold = scene_.contactModel == ContactModel::Manifold;
-        value = (cond.mid(6) == QLatin1String("manifold")) == manifold;
+        value = sceneWordValue<ContactModel>(cond.mid(6).toStdString()) == scene_.contactModel;
     } else if (cond == QLatin1String("plane")) {
         const int k = ctx.look.contact;
         value = k >= 0 && k < static_cast<int>(trace_.contacts.size()) && trace_.contacts[k].bodyB < 0;

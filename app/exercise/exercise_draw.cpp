@@ -4,6 +4,7 @@
 #include "app/exercise/scene_text.h"
 #include "app/exercise/value_grid.h"
 #include "app/scene/scene_loader.h"
+#include "app/scene/scene_format.h"
 #include "physics/engine/quantity_catalogue.h"
 #include "physics/engine/world.h"
 
@@ -115,8 +116,9 @@ GeneratedExercise generateExercise(const ExerciseSpec& spec, std::uint64_t seed)
         const std::uint64_t subSeed = seed ^ (static_cast<std::uint64_t>(attempt) * 0x9E3779B97F4A7C15ULL);
         std::mt19937_64 engine(subSeed);
         QJsonObject doc = drawScene(spec, engine);
-        doc.insert("name", spec.scene.value("name").toString(spec.lessonId) + ", seed " + QString::number(seed));
-        if (!spec.description.isEmpty()) doc.insert("description", spec.description);
+        const QString name = sceneformat::key(sceneformat::Key::Name);
+        doc.insert(name, spec.scene.value(name).toString(spec.lessonId) + ", seed " + QString::number(seed));
+        if (!spec.description.isEmpty()) doc.insert(sceneformat::key(sceneformat::Key::Description), spec.description);
         const QByteArray bytes = indentedSceneJson(doc);
         SceneLoadResult loaded = parseScene(bytes, spec.file);
         if (!loaded.ok()) {

@@ -4,6 +4,8 @@
 #include "app/exercise/value_grid.h"
 #include "app/core/lesson_catalogue.h"
 #include "app/scene/scene_loader.h"
+#include "app/scene/strict_json_scan.h"
+#include "app/scene/scene_format.h"
 #include "physics/engine/quantity_catalogue.h"
 
 #include <QDir>
@@ -58,7 +60,14 @@ ExerciseLoadResult loadExercise(const QString& lesson)
         return result;
     }
     QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
+    const QByteArray bytes = file.readAll();
+    const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
+    // A key given twice (QJsonDocument keeps the last silently), NaN or 1e999: the
+    // scene loader's strict scan, with the JSON path.
+    if (const std::optional<scenefile::RawFinding> f = scenefile::scanParsed(bytes, parseError)) {
+        result.errors << fmt(spec, f->path, f->reason);
+        return result;
+    }
     if (parseError.error != QJsonParseError::NoError || !doc.isObject()) {
         result.errors << fmt(spec, "(file)",
                              parseError.error != QJsonParseError::NoError
@@ -194,8 +203,14 @@ ExerciseLoadResult loadExercise(const QString& lesson)
     if (!requireValue.isUndefined() && !requireValue.isArray()) errors << fmt(spec, "require", "must be a list");
     const QJsonArray requireList = requireValue.toArray();
     QStringList names;
-    for (const QJsonValue& b : spec.scene.value("bodies").toArray()) names << b.toObject().value("name").toString();
-    for (const QJsonValue& p : spec.scene.value("planes").toArray()) names << p.toObject().value("name").toString();
+    using sceneformat::Key;
+    using sceneformat::key;
+    for (const QJsonValue& b : spec.scene.value(key(Key::Bodies)).toArray()) {
+        names << b.toObject().value(key(Key::BodyName)).toString();
+    }
+    for (const QJsonValue& p : spec.scene.value(key(Key::Planes)).toArray()) {
+        names << p.toObject().value(key(Key::PlaneName)).toString();
+    }
     for (qsizetype i = 0; i < requireList.size(); ++i) {
         const QString at = QStringLiteral("require[%1]").arg(i);
         const QJsonObject r = requireList[i].toObject();

@@ -1,6 +1,7 @@
 #include "app/exercise/exercise_worksheet.h"
 
 #include "app/output/value_format.h"
+#include "app/scene/scene_format.h"
 #include "physics/engine/quantity_catalogue.h"
 
 #include <QJsonArray>
@@ -54,8 +55,10 @@ QString tableOf(const QString& title, const QJsonArray& rows)
 
 QString exerciseWorksheetHtml(const ExerciseSpec& spec, const GeneratedExercise& g, bool withAnswers)
 {
+    using sceneformat::Key;
+    using sceneformat::key;
     const QJsonObject scene = QJsonDocument::fromJson(g.sceneJson).object();
-    const QString title = scene.value("name").toString();
+    const QString title = scene.value(key(Key::Name)).toString();
     QString html;
     html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + title.toHtmlEscaped() +
             (withAnswers ? QStringLiteral(" (answer key)") : QString()) + "</title>\n";
@@ -69,11 +72,14 @@ QString exerciseWorksheetHtml(const ExerciseSpec& spec, const GeneratedExercise&
     html += "<h2>Setup</h2>\n<table>\n";
     for (auto it = scene.begin(); it != scene.end(); ++it) {
         if (it.value().isArray() && !it.value().toArray().isEmpty() && it.value().toArray()[0].isObject()) continue;
-        if (it.key() == "name" || it.key() == "description") continue;
+        if (it.key() == key(Key::Name) || it.key() == key(Key::Description)) continue;
         html += "<tr><th>" + it.key().toHtmlEscaped() + "</th><td>" + cellText(it.value()).toHtmlEscaped() + "</td></tr>\n";
     }
     html += "</table>\n";
-    for (const QString& list : QStringList{"bodies", "forces", "probes", "planes", "pairs"}) {
+    // Each list of the scene (bodies, forces, torques, ...) as a table, in the table's order.
+    for (const sceneformat::KeyRow& r : sceneformat::rows()) {
+        if (r.section != sceneformat::Section::Scene || r.type != sceneformat::Type::List) continue;
+        const QString list = key(r.id);
         html += tableOf(list.left(1).toUpper() + list.mid(1), scene.value(list).toArray());
     }
     html += "<p>Lengths in m, masses in kg, forces in N, velocities in m/s and rad/s, times in s; "

@@ -1,5 +1,7 @@
 #include "app/exercise/scene_text.h"
 
+#include "app/scene/scene_format.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QStringList>
@@ -19,8 +21,10 @@ void writeJson(const QJsonValue& v, int indent, QByteArray& out)
     if (v.isObject()) {
         const QJsonObject o = v.toObject();
         QStringList keys;
-        for (const char* first : {"name", "description"}) {
-            if (o.contains(QLatin1String(first))) keys << QLatin1String(first);
+        // The name first, then the description (of the scene; a body's or plane's name
+        // is the same key), as the lessons' files have them.
+        for (const QString& first : {sceneformat::key(sceneformat::Key::Name), sceneformat::key(sceneformat::Key::Description)}) {
+            if (o.contains(first)) keys << first;
         }
         for (const QString& k : o.keys()) {
             if (!keys.contains(k)) keys << k;

@@ -2,6 +2,7 @@
 
 #include "app/output/value_format.h"
 #include "physics/engine/inertia.h"
+#include "physics/engine/scene_words.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -18,9 +19,11 @@ QJsonValue bodyName(const SceneDef& scene, int body)
     return QString::fromStdString(scene.bodies[body].name);
 }
 
+// The convention's word, as the scene file spells it (physics/engine/scene_words.h).
 QString conventionName(InertiaConvention c)
 {
-    return c == InertiaConvention::Standard ? QStringLiteral("standard") : QStringLiteral("course-template");
+    const std::string_view w = sceneWord(c);
+    return QString::fromLatin1(w.data(), static_cast<qsizetype>(w.size()));
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "app/scene/scene_format.h"
 
 #include "physics/engine/integrator_registry.h"
+#include "physics/engine/scene_words.h"
 
 #include <array>
 #include <cassert>
@@ -138,6 +139,17 @@ const KeyRow* find(Section s, const QString& name)
     return nullptr;
 }
 
+namespace {
+
+QStringList wordList(std::span<const std::string_view> words)
+{
+    QStringList list;
+    for (std::string_view w : words) list << QString::fromLatin1(w.data(), static_cast<qsizetype>(w.size()));
+    return list;
+}
+
+} // namespace
+
 QStringList words(Choices c)
 {
     switch (c) {
@@ -147,11 +159,11 @@ QStringList words(Choices c)
         for (const IntegratorInfo& i : integratorCatalogue()) names << QString::fromLatin1(i.name);
         return names;
     }
-    // In the order of each enumeration (physics/engine/inertia.h, scene.h).
-    case Choices::InertiaConvention: return {QStringLiteral("standard"), QStringLiteral("course-template")};
-    case Choices::PlaneContacts: return {QStringLiteral("per-point"), QStringLiteral("average")};
-    case Choices::ContactModel: return {QStringLiteral("course"), QStringLiteral("manifold")};
-    case Choices::PositionFix: return {QStringLiteral("ngs"), QStringLiteral("baumgarte"), QStringLiteral("none")};
+    // The enumerations' own words, in their order (physics/engine/scene_words.h).
+    case Choices::InertiaConvention: return wordList(kInertiaConventionWords);
+    case Choices::PlaneContacts: return wordList(kPlaneContactWords);
+    case Choices::ContactModel: return wordList(kContactModelWords);
+    case Choices::PositionFix: return wordList(kPositionFixWords);
     }
     return {};
 }

@@ -2,13 +2,18 @@
 // with its object, JSON type, unit, meaning, default and allowed words, in one table.
 // The loader (scene_mapping.cpp) reads a file's keys by it and refuses the others with
 // "did you mean"; the writer writes them by it; the scene editor shows and edits them by
-// it (units, meanings, choices). docs/scene.schema.json must declare the same keys,
-// types, required keys and words (tst_scene_format), and no other file of the scene's
-// rooms spells a key (tst_scene_format's grep).
+// it (units, meanings, choices); the exercises and the lesson catalogue read a scene's
+// JSON by it. docs/scene.schema.json must declare the same keys, types, required keys,
+// words and defaults, and a left-out key must load as its default (tst_scene_format);
+// docs/scene-format.md's key tables list the same keys, required keys, defaults and
+// units (tst_scene_format_doc); no other file of app/ spells a key or a word
+// (tst_scene_keys). The enumerations' words themselves are the physics'
+// (physics/engine/scene_words.h); words() and word() give them as QStrings.
 //
 // Adding a key: the field in physics/engine/scene.h and its rule in validate(); its
 // row here (and its Key); its reading in scene_mapping.cpp, its writing and comparison
-// in scene_writer.cpp, its value in the editor (scene_editor_values.cpp); the schema.
+// in scene_writer.cpp, its value in the editor (scene_editor_values.cpp); the schema;
+// its row in docs/scene-format.md's table of its object.
 #pragma once
 
 #include "physics/engine/inertia.h"

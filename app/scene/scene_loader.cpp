@@ -16,7 +16,7 @@ namespace rbw {
 
 using scenefile::FieldError;
 using scenefile::RawFinding;
-using scenefile::scanJson;
+using scenefile::scanParsed;
 using scenefile::textPosition;
 using scenefile::toScene;
 
@@ -25,19 +25,13 @@ SceneLoadResult parseScene(const QByteArray& json, const QString& fileLabel)
     SceneLoadResult result;
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
-    const bool parsed = parseError.error == QJsonParseError::NoError;
-    const bool badWord = parseError.error == QJsonParseError::IllegalNumber ||
-                         parseError.error == QJsonParseError::IllegalValue;
-    if (parsed || badWord) {
-        // Duplicate keys in a file that parsed; the field of a NaN or 1e999 where
-        // QJsonDocument stopped (its error offset lies in or after that token).
-        const qsizetype end = parsed ? json.size() : parseError.offset + 1;
-        if (const std::optional<RawFinding> f = scanJson(json, end, badWord)) {
-            result.errors << QStringLiteral("%1: %2: %3").arg(fileLabel, f->path, f->reason);
-            return result;
-        }
+    // Duplicate keys in a file that parsed; the field of a NaN or 1e999 where
+    // QJsonDocument stopped.
+    if (const std::optional<RawFinding> f = scanParsed(json, parseError)) {
+        result.errors << QStringLiteral("%1: %2: %3").arg(fileLabel, f->path, f->reason);
+        return result;
     }
-    if (!parsed) {
+    if (parseError.error != QJsonParseError::NoError) {
         // QJsonParseError::offset points at (or just after) the offending token.
         result.errors << QStringLiteral("%1: malformed JSON at %2: %3")
                              .arg(fileLabel, textPosition(json, parseError.offset), parseError.errorString());

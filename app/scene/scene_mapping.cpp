@@ -276,8 +276,9 @@ SceneDef toScene(const QJsonObject& top, const QString& fileLabel)
                                           : std::string();
     s.dt = toNumber(o.need(K::Dt), o.at(K::Dt));
     s.steps = integerOr(o, K::Steps, 1);
-    s.integrator = o.has(K::Integrator) ? toString(o.value(K::Integrator), o.at(K::Integrator)).toStdString()
-                                        : std::string("explicit-euler");
+    // Left out, SceneDef's own default (as for every key below); the table's default is
+    // tested to be the same (tst_scene_format, leftOutIsTheDefault).
+    if (o.has(K::Integrator)) s.integrator = toString(o.value(K::Integrator), o.at(K::Integrator)).toStdString();
     if (o.has(K::InertiaConvention)) {
         s.inertiaConvention = toConvention(o.value(K::InertiaConvention), o.at(K::InertiaConvention));
     }

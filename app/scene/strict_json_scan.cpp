@@ -86,6 +86,15 @@ QString textPosition(const QByteArray& text, qsizetype offset)
     return QStringLiteral("line %1, column %2").arg(line).arg(column);
 }
 
+std::optional<RawFinding> scanParsed(const QByteArray& json, const QJsonParseError& error)
+{
+    const bool parsed = error.error == QJsonParseError::NoError;
+    const bool badWord = error.error == QJsonParseError::IllegalNumber || error.error == QJsonParseError::IllegalValue;
+    if (!parsed && !badWord) return std::nullopt;
+    // QJsonDocument's error offset lies in or after the token it stopped at.
+    return scanJson(json, parsed ? json.size() : error.offset + 1, badWord);
+}
+
 std::optional<RawFinding> scanJson(const QByteArray& json, qsizetype end, bool checkNumbers)
 {
     struct Frame {

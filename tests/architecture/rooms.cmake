@@ -17,7 +17,7 @@ rbw_room(physics/workbook          MAY_INCLUDE physics/engine QT_FREE MAX_LINES 
 
 rbw_room(app/output                MAY_INCLUDE physics)
 rbw_room(app/scene                 MAY_INCLUDE physics/engine app/output)
-rbw_room(app/core                  MAY_INCLUDE physics/engine)
+rbw_room(app/core                  MAY_INCLUDE physics/engine app/scene)
 rbw_room(app/exercise              MAY_INCLUDE physics app/core app/output app/scene)
 rbw_room(app/derivation            MAY_INCLUDE physics app/core app/output)
 rbw_room(app/cli                   MAY_INCLUDE physics app/core app/output app/scene app/exercise app/derivation)

@@ -421,6 +421,23 @@ private slots:
         QTest::newRow("unknown key")
             << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 2], "step": 0.5, "stp": 1 } ], )" + q + "}")
             << "exercise.json: vary[0].stp: unknown key";
+        // issue 22: a key given twice was read as its last value; refused through the scene
+        // loader's strict scan, with the JSON path. (The same key in two sibling objects,
+        // vary[0].path and vary[1].path, is no duplicate: the lessons' own files have it.)
+        QTest::newRow("duplicate top-level key")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 2], "step": 0.5 } ], )" + q + R"(, "quantities": ["torque"] })")
+            << "exercise.json: quantities: duplicate key \"quantities\" (first at line 1, column 75, again at line 1, column 100)";
+        QTest::newRow("duplicate key in a list")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 2], "step": 0.5, "step": 1 } ], )" + q + "}")
+            << "exercise.json: vary[0].step: duplicate key \"step\"";
+        QTest::newRow("duplicate key, escaped")
+            << "03-two-box-collision"
+            << QByteArray(R"({ "vary": [ { "path": "restitution", "range": [0.5, 1], "step": 0.1 } ],
+                             "require": [ { "contact": ["A", "B"], "cont\u0061ct": ["A", "B"] } ], "quantities": ["impulse"] })")
+            << "exercise.json: require[0].contact: duplicate key \"contact\"";
+        QTest::newRow("NaN")
+            << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [1, 2], "step": NaN } ], )" + q + "}")
+            << "exercise.json: vary[0].step: must be a finite number, got NaN";
         // Every value of the range breaks the scene: the loader's reason, after the retries.
         QTest::newRow("scene does not load")
             << "01-one-step" << QByteArray(R"({ "vary": [ { "path": "bodies[0].mass", "range": [-2, -1], "step": 0.5 } ], "attempts": 3, )" + q + "}")

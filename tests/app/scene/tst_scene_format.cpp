@@ -1,18 +1,21 @@
-// The scene-format table (app/scene/scene_format.h) is the one place a scene key is
-// spelled:
+// The scene-format table (app/scene/scene_format.h) is the one statement of the scene
+// format:
 //   - docs/scene.schema.json declares exactly the table's keys in each object, with the
 //     same JSON types, required keys, allowed words and defaults (schemaIsTheTable); a
 //     schema changed in one place (a key, a word, a type, a required key, a default)
 //     is caught (tamperedSchemaDiffers, the negative controls);
-//   - no other source file of the scene's rooms (app/scene, app/gui/panels/editor)
-//     spells a key or an enumeration's word as a string literal (keysSpelledOnce); the
-//     scanner finds a key typed elsewhere (scannerFindsAKey, its negative control);
+//   - a key the table gives a default means that default to the loader: a scene with
+//     the key left out and one with the default written load the same, field by field
+//     (leftOutIsTheDefault, with other values as its negative controls);
 //   - the table itself is consistent: keys unique within an object, words unique,
 //     each word read back as its enumeration value.
+// That no other file spells a key is tst_scene_keys'; that docs/scene-format.md lists
+// the table's keys, tst_scene_format_doc's.
 #include "app/scene/scene_format.h"
+#include "app/scene/scene_loader.h"
+#include "app/scene/scene_writer.h"
 
 #include <QDir>
-#include <QDirIterator>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -164,38 +167,52 @@ QStringList differences(const QJsonObject& schema)
     return out;
 }
 
-// The code of a C++ text without its // comments (a comment may name a key; a "//"
-// inside a string literal is kept, after an even number of quotes on its line).
-QString withoutComments(const QString& text)
+// The smallest valid scene with one object of each kind, each with only its required
+// keys (a pair needs one coefficient): the base each default is tried against.
+QJsonObject minimalScene()
 {
-    QStringList lines = text.split('\n');
-    for (QString& line : lines) {
-        for (qsizetype at = line.indexOf(QStringLiteral("//")); at >= 0; at = line.indexOf(QStringLiteral("//"), at + 2)) {
-            if (line.left(at).count('"') % 2 == 0) {
-                line.truncate(at);
-                break;
-            }
-        }
-    }
-    return lines.join('\n');
+    return QJsonDocument::fromJson(R"({
+        "dt": 0.01,
+        "bodies": [ { "name": "a", "size": [1, 1, 1], "mass": 1 },
+                    { "name": "b", "size": [1, 1, 1], "mass": 1, "position": [5, 0, 0] } ],
+        "forces": [ { "body": "a", "point": [0, 0, 0], "force": [1, 0, 0] } ],
+        "torques": [ { "body": "a", "torque": [0, 0, 1] } ],
+        "push": { "body": "a" },
+        "probes": [ { "body": "a", "point": [0, 0, 0] } ],
+        "planes": [ { "name": "ground", "point": [0, -2, 0], "normal": [0, 1, 0] } ],
+        "pairs": [ { "bodies": ["a", "b"], "friction": 0.5 } ],
+        "energy_jump": {}
+    })").object();
 }
 
-// The keys and enumeration words a C++ text spells as a string literal ("mass") or as
-// a quoted word inside one (\"mass\"), outside comments.
-QStringList spelledKeys(const QString& text)
+// The scene with key k of section s (in the first object of its kind) set to v, or
+// left out when v is undefined.
+QJsonObject withKey(QJsonObject scene, Section s, const QString& k, const QJsonValue& v)
 {
-    QSet<QString> literals;
-    for (const KeyRow& r : rows()) literals.insert(QString::fromLatin1(r.name));
-    for (Choices c : {Choices::InertiaConvention, Choices::PlaneContacts, Choices::ContactModel, Choices::PositionFix}) {
-        for (const QString& w : words(c)) literals.insert(w);
+    auto set = [&](QJsonObject o) {
+        if (v.isUndefined()) o.remove(k);
+        else o.insert(k, v);
+        return o;
+    };
+    auto inObject = [&](Key holder) { scene.insert(key(holder), set(scene.value(key(holder)).toObject())); };
+    auto inFirst = [&](Key list) {
+        QJsonArray a = scene.value(key(list)).toArray();
+        a[0] = set(a[0].toObject());
+        scene.insert(key(list), a);
+    };
+    switch (s) {
+    case Section::Scene: return set(scene);
+    case Section::EnergyJump: inObject(Key::EnergyJump); break;
+    case Section::Push: inObject(Key::Push); break;
+    case Section::Body: inFirst(Key::Bodies); break;
+    case Section::Force: inFirst(Key::Forces); break;
+    case Section::Torque: inFirst(Key::Torques); break;
+    case Section::Probe: inFirst(Key::Probes); break;
+    case Section::Plane: inFirst(Key::Planes); break;
+    case Section::Pair: inFirst(Key::Pairs); break;
+    case Section::Orientation: break;   // no key of an orientation has a default
     }
-    const QString code = withoutComments(text);
-    QStringList found;
-    for (const QString& l : literals) {
-        if (code.contains('"' + l + '"') || code.contains(QStringLiteral("\\\"%1\\\"").arg(l))) found << l;
-    }
-    found.sort();
-    return found;
+    return scene;
 }
 
 } // namespace
@@ -207,8 +224,8 @@ private slots:
     void schemaIsTheTable();
     void tamperedSchemaDiffers_data();
     void tamperedSchemaDiffers();
-    void scannerFindsAKey();
-    void keysSpelledOnce();
+    void leftOutIsTheDefault_data();
+    void leftOutIsTheDefault();
 };
 
 void TestSceneFormat::tableIsConsistent()
@@ -303,37 +320,53 @@ void TestSceneFormat::tamperedSchemaDiffers()
     QCOMPARE(differences(schema), QStringList{expected});
 }
 
-// The scanner below is honest: a key, a word, typed in a text are found; a key's name
-// inside a longer literal or without quotes is not a key.
-void TestSceneFormat::scannerFindsAKey()
+// Each default of the table is the loader's: leaving the key out and writing the
+// table's default load the same scene. Negative controls: other values differ, in the
+// key's own field (so sceneDifferences sees the fields the defaults are about).
+void TestSceneFormat::leftOutIsTheDefault_data()
 {
-    QCOMPARE(spelledKeys(QStringLiteral("b.mass = toNumber(o.value(\"mass\"), path);")), QStringList{"mass"});
-    QCOMPARE(spelledKeys(QStringLiteral("if (w == \"course-template\") {}")), QStringList{"course-template"});
-    QCOMPARE(spelledKeys(QStringLiteral("throw E{QStringLiteral(\"leave \\\"mass\\\" out\")};")), QStringList{"mass"});
-    // Negative controls: a key's name in a comment, in a longer literal, or unquoted.
-    QCOMPARE(spelledKeys(QStringLiteral("x = o.value(key(Key::BodyMass)); // \"mass\"\ny = \"masses\"; z = mass;")),
-             QStringList{});
+    QTest::addColumn<Section>("section");
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QJsonValue>("value");
+    QTest::addColumn<bool>("same");
+    int defaults = 0;
+    for (const KeyRow& r : rows()) {
+        if (!*r.fallback) continue;
+        QVERIFY2(r.section != Section::Orientation, r.name);
+        const QJsonValue fallback = QJsonDocument::fromJson(QByteArray("[") + r.fallback + "]").array().at(0);
+        QTest::addRow("%s.%s", qPrintable(sectionName(r.section)), r.name) << r.section << key(r.id) << fallback << true;
+        ++defaults;
+    }
+    QVERIFY(defaults >= 25);   // the table was read
+    QTest::newRow("control: steps 2") << Section::Scene << key(Key::Steps) << QJsonValue(2) << false;
+    QTest::newRow("control: another integrator") << Section::Scene << key(Key::Integrator)
+                                                 << QJsonValue(words(Choices::Integrator).last()) << false;
+    QTest::newRow("control: manifold") << Section::Scene << key(Key::ContactModel)
+                                       << QJsonValue(word(ContactModel::Manifold)) << false;
+    QTest::newRow("control: gravity") << Section::Scene << key(Key::Gravity) << QJsonValue(QJsonArray{0, -9.81, 0}) << false;
+    QTest::newRow("control: energy_jump.factor 20") << Section::EnergyJump << key(Key::EnergyJumpFactor) << QJsonValue(20) << false;
+    QTest::newRow("control: a particle") << Section::Body << key(Key::BodyAngularResponse) << QJsonValue(false) << false;
+    QTest::newRow("control: torque off") << Section::Torque << key(Key::TorqueEnabled) << QJsonValue(false) << false;
+    QTest::newRow("control: push force 2") << Section::Push << key(Key::PushForce) << QJsonValue(2) << false;
 }
 
-// No source file of the scene's rooms but the table spells a key or a word.
-void TestSceneFormat::keysSpelledOnce()
+void TestSceneFormat::leftOutIsTheDefault()
 {
-    const QString table = QStringLiteral("app/scene/scene_format.cpp");
-    QStringList offenders;
-    int files = 0;
-    for (const QString& room : {QStringLiteral("app/scene"), QStringLiteral("app/gui/panels/editor")}) {
-        QDirIterator it(kSource + '/' + room, {"*.cpp", "*.h"}, QDir::Files, QDirIterator::Subdirectories);
-        while (it.hasNext()) {
-            const QString path = it.next();
-            const QString relative = QDir(kSource).relativeFilePath(path);
-            ++files;
-            if (relative == table) continue;
-            const QStringList found = spelledKeys(QString::fromUtf8(readFile(path)));
-            if (!found.isEmpty()) offenders << QStringLiteral("%1: %2").arg(relative, found.join(", "));
-        }
+    QFETCH(Section, section);
+    QFETCH(QString, name);
+    QFETCH(QJsonValue, value);
+    QFETCH(bool, same);
+    auto load = [](const QJsonObject& o) { return parseScene(QJsonDocument(o).toJson(), QStringLiteral("defaults.json")); };
+    const SceneLoadResult leftOut = load(withKey(minimalScene(), section, name, QJsonValue::Undefined));
+    const SceneLoadResult given = load(withKey(minimalScene(), section, name, value));
+    QVERIFY2(leftOut.ok(), qPrintable(leftOut.errors.join('\n')));
+    QVERIFY2(given.ok(), qPrintable(given.errors.join('\n')));
+    const QStringList diff = sceneDifferences(*leftOut.scene, *given.scene);
+    if (same) {
+        QVERIFY2(diff.isEmpty(), qPrintable(diff.join('\n')));
+    } else {
+        QVERIFY2(!diff.isEmpty() && diff.join('\n').contains(name), qPrintable(diff.join('\n')));
     }
-    QVERIFY2(files >= 8, qPrintable(QString::number(files)));   // the rooms were found
-    QVERIFY2(offenders.isEmpty(), qPrintable(offenders.join('\n')));
 }
 
 QTEST_GUILESS_MAIN(TestSceneFormat)
