@@ -226,6 +226,13 @@ inline constexpr QuantityInfo kQuantityCatalogue[] = {
      "\\mathbf{F}_c = -\\mathbf{F}\\ \\text{(asleep: the support holds the body still)}", Frame::World, "N"},
     {"sleep_contact_torque", "contact_torque", Stage::Collision, IndexKind::None, "\\mathbf{q}_c", "q_c",
      "\\mathbf{q}_c = -\\mathbf{q}\\ \\text{(asleep)}", Frame::World, "N·m"},
+    // The manifold model's velocity update (manifold_velocity_stage.h), before the integration.
+    {"solved_linear_velocity", "solved_linear_velocity", Stage::Integration, IndexKind::None, "\\mathbf{v}_{n+1}", "v⁺",
+     "\\mathbf{v}_{n+1} = \\mathbf{v}_n + h\\,(\\mathbf{F} + \\mathbf{F}_c)/M", Frame::World, "m/s"},
+    {"solved_angular_momentum", "solved_angular_momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}_{n+1}", "L⁺",
+     "\\mathbf{L}_{n+1} = \\mathbf{L}_n + h\\,(\\mathbf{q} + \\mathbf{q}_c)", Frame::World, "kg·m²/s"},
+    {"solved_angular_velocity", "solved_angular_velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}_{n+1}", "ω⁺",
+     "\\boldsymbol{\\omega}_{n+1} = I^{-1}(\\mathbf{r}_n)\\,\\mathbf{L}_{n+1}", Frame::World, "rad/s"},
     {"sleep_time", "sleep_time", Stage::Correction, IndexKind::None, "t_{\\text{rest}}", "t_rest",
      "t_{\\text{rest}} \\leftarrow t_{\\text{rest}} + h\\ \\text{if}\\ |\\mathbf{v}| \\le v_{\\text{sleep}}\\ \\text{and}\\ |\\boldsymbol{\\omega}| \\le \\omega_{\\text{sleep}},\\ \\text{else}\\ 0",
      Frame::None, "s"},

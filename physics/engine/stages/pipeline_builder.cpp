@@ -11,11 +11,14 @@
 // finite_check follows the contact stages whenever there is one.
 //
 // The manifold model (contact_model "manifold", when two bodies or a plane can touch):
-//   [gravity] -> loads -> manifold_contacts -> [energy_bound] -> integration (one per
-//   group) -> finite_check -> [energy_check] -> manifold_positions -> [sleep]
-//   -> finite_check -> [probes]
-// The contacts are solved before the integration and handed to it as loads; the
-// position fix and sleeping follow it.
+//   [gravity] -> loads -> manifold_contacts -> [energy_bound] -> manifold_velocities
+//   -> integration (one per group) -> finite_check -> [energy_check]
+//   -> manifold_positions -> [sleep] -> finite_check -> [probes]
+// Forces -> velocities -> contacts -> positions, whatever the integrator: the contacts
+// are solved on the velocities the step will have, manifold_velocities gives every body
+// the solved velocities and spends the loads, and the integration applies the
+// integrator's own position and orientation formula with them (docs/collisions.md,
+// "Every integrator"). The position fix and sleeping follow it.
 //
 // docs/architecture.md ("The step pipeline") describes each stage, its file and its
 // trace ids.
@@ -31,6 +34,7 @@
 #include "physics/engine/stages/integration_stage.h"
 #include "physics/engine/manifold/manifold_contact_stage.h"
 #include "physics/engine/manifold/manifold_position_stage.h"
+#include "physics/engine/manifold/manifold_velocity_stage.h"
 #include "physics/engine/stages/probes_stage.h"
 #include "physics/engine/manifold/sleep_stage.h"
 
@@ -52,6 +56,7 @@ const char* pipelineStageName(PipelineStage stage)
     case PipelineStage::BoxPlane: return "box_plane";
     case PipelineStage::Correction: return "correction";
     case PipelineStage::ManifoldContacts: return "manifold_contacts";
+    case PipelineStage::ManifoldVelocities: return "manifold_velocities";
     case PipelineStage::ManifoldPositions: return "manifold_positions";
     case PipelineStage::Sleep: return "sleep";
     case PipelineStage::Probes: return "probes";
@@ -125,6 +130,9 @@ std::vector<PipelineEntry> buildPipeline(const SceneDef& scene, const std::vecto
     // then counts the contact loads among the step's loads.
     if (manifold) add(std::make_unique<ManifoldContactStage>(contactScratch, boxPairs, planeTests));
     if (energyCheck) add(std::make_unique<EnergyBoundStage>(mass));
+    // After the bound (which counts the contact loads among the loads): the solved
+    // velocities, so that the integration moves the bodies with them.
+    if (manifold) add(std::make_unique<ManifoldVelocityStage>());
     // One integration per integrator group that has a movable body.
     for (int g = 0; g < static_cast<int>(groups.names.size()); ++g) {
         std::vector<int> bodies;

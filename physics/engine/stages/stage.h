@@ -37,6 +37,7 @@ enum class PipelineStage {
     Correction,    // push penetrating bodies apart (position_correction)
     // The manifold contact model (contact_model "manifold", physics/engine/manifold/):
     ManifoldContacts,    // before the integration: manifolds, sequential impulses -> contact loads
+    ManifoldVelocities,  // v, L, omega from the loads and the contact loads; loads spent
     ManifoldPositions,   // after the integration: the position fix (NGS), no velocity change
     Sleep,               // bodies at rest go to sleep, touched ones wake
     Probes,        // probe points, when a trace is recorded

@@ -115,13 +115,15 @@ private slots:
             rbw::parseScene(sceneJson(QStringLiteral(R"("contact_model": "manifold",)")), QStringLiteral("s.json"));
         QCOMPARE(rbw::World(*manifold.scene).pipelineLabels(),
                  (std::vector<std::string>{"gravity", "loads", "manifold_contacts", "energy_bound",
-                                           "integration:explicit-euler", "finite_check", "energy_check",
+                                           "manifold_velocities", "integration:explicit-euler", "finite_check",
+                                           "energy_check",
                                            "manifold_positions", "sleep", "finite_check"}));
         const rbw::SceneLoadResult awake = rbw::parseScene(
             sceneJson(QStringLiteral(R"("contact_model": "manifold", "sleep": false,)")), QStringLiteral("s.json"));
         QCOMPARE(rbw::World(*awake.scene).pipelineLabels(),
                  (std::vector<std::string>{"gravity", "loads", "manifold_contacts", "energy_bound",
-                                           "integration:explicit-euler", "finite_check", "energy_check",
+                                           "manifold_velocities", "integration:explicit-euler", "finite_check",
+                                           "energy_check",
                                            "manifold_positions", "finite_check"}));
     }
 
