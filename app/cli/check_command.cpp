@@ -2,6 +2,7 @@
 
 #include "app/cli/standard_output.h"
 #include "app/exercise/answers_file.h"
+#include "app/exercise/answers_input.h"
 #include "app/scene/scene_loader.h"
 #include "physics/workbook/checker/checker.h"
 #include "physics/engine/world.h"
@@ -74,9 +75,45 @@ QString csvField(QString s)
 struct FileResult {
     QString file;
     long step = 0;
+    QString error;        // a file that could not be checked: why (it still gets a row)
+    int errorStatus = 0;  // kBadInput or kBlowUp
+    QString stepHint;     // "steps count from 0: did you mean step 0?"
     std::vector<Answer> answers;
     std::vector<AnswerResult> results;
+    std::vector<QString> hints;   // per answer: an input slip (slipHint), or empty
 };
+
+// The score of one file: how many answers got each verdict.
+struct Score {
+    int correct = 0, imprecise = 0, follows = 0, wrong = 0;
+    QString text() const
+    {
+        return QStringLiteral("%1 correct, %2 imprecise, %3 follows, %4 wrong").arg(correct).arg(imprecise).arg(follows).arg(wrong);
+    }
+    QJsonObject json() const
+    {
+        return QJsonObject{{"correct", correct}, {"imprecise", imprecise}, {"follows", follows}, {"wrong", wrong}};
+    }
+};
+
+Score scoreOf(const FileResult& f)
+{
+    Score s;
+    for (const AnswerResult& r : f.results) {
+        switch (r.verdict) {
+        case Verdict::Correct: ++s.correct; break;
+        case Verdict::Imprecise: ++s.imprecise; break;
+        case Verdict::FollowsFromEarlier: ++s.follows; break;
+        case Verdict::Wrong: ++s.wrong; break;
+        }
+    }
+    return s;
+}
+
+bool allRight(const std::vector<AnswerResult>& results)
+{
+    return std::all_of(results.begin(), results.end(), [](const AnswerResult& r) { return countsAsCorrect(r.verdict); });
+}
 
 } // namespace
 
@@ -104,37 +141,74 @@ int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, 
         }
         stepOption = k;
     }
-    const SceneLoadResult loaded = loadSceneFile(scenePath);
+    QByteArray sceneBytes;
+    QString readError;
+    if (!readInputFile(scenePath, &sceneBytes, &readError)) return fail(kBadInput, readError);
+    const SceneLoadResult loaded = parseScene(sceneBytes, scenePath);
     if (!loaded.ok()) return fail(kBadInput, loaded.errors.join("\nrbw: "));
     const SceneDef& scene = *loaded.scene;
 
+    // A marking sheet never loses a student: a file that cannot be read or checked gets
+    // a row with its error, and the others go on (exit 2 at the end).
     std::vector<FileResult> files;
+    std::vector<AnswersInput> inputs;
+    std::vector<long> steps;
     for (const QString& path : answerPaths) {
-        const AnswersFile af = loadAnswersFile(path, scene);
-        if (!af.ok()) return fail(kBadInput, af.errors.join("\nrbw: "));
         FileResult fr;
         fr.file = path;
-        fr.step = stepOption.value_or(af.step.value_or(0));
-        // The world at the start of step k, and the trace of that step.
-        World world(scene);
-        for (long k = 0; k < fr.step; ++k) {
-            const StepStatus st = world.step();
-            if (!st.ok) return fail(kBlowUp, QString::fromStdString(st.message));
+        AnswersInput in;
+        QByteArray bytes;
+        if (!readInputFile(path, &bytes, &readError)) {
+            in.errors << readError;
+        } else {
+            in = readAnswersInput(bytes, path, scene, stepOption);
         }
-        const WorldSnapshot before = world.snapshot();
-        StepTrace trace;
-        const StepStatus st = world.step(&trace);
-        if (!st.ok) return fail(kBlowUp, QString::fromStdString(st.message));
-        world.restore(before);
-        for (size_t i = 0; i < af.answers.size(); ++i) {
-            const std::string problem = answerProblem(trace, af.answers[i]);
-            if (!problem.empty()) {
-                return fail(kBadInput, QStringLiteral("%1: %2: %3").arg(path, af.paths[i], QString::fromStdString(problem)));
-            }
+        fr.step = in.step;
+        if (!in.ok()) {
+            fr.error = in.errors.join(QLatin1Char('\n'));
+            fr.errorStatus = kBadInput;
+        } else {
+            steps.push_back(in.step);
+            if (in.step > 0) steps.push_back(in.step - 1);   // for the "steps count from 0" hint
         }
-        fr.answers = af.answers;
-        fr.results = checkAnswers(world, trace, af.answers, tolerance);
         files.push_back(std::move(fr));
+        inputs.push_back(std::move(in));
+    }
+    // Each scene simulated once for the whole sheet, as far as the largest asked step.
+    StepStates states(scene);
+    QString blowUp;
+    states.prepare(steps, &blowUp);
+    for (size_t n = 0; n < files.size(); ++n) {
+        FileResult& fr = files[n];
+        const AnswersInput& in = inputs[n];
+        if (fr.errorStatus != 0) continue;
+        if (!states.has(fr.step)) {
+            fr.error = QStringLiteral("%1: step %2: %3").arg(fr.file).arg(fr.step).arg(blowUp);
+            fr.errorStatus = kBlowUp;
+            continue;
+        }
+        const QStringList problems = answersProblems(in, states.trace(fr.step), scene, fr.file);
+        if (!problems.isEmpty()) {
+            fr.error = problems.join(QLatin1Char('\n'));
+            fr.errorStatus = kBadInput;
+            continue;
+        }
+        fr.answers = in.file.answers;
+        fr.results = checkAnswers(*states.worldBefore(fr.step), states.trace(fr.step), fr.answers, tolerance);
+        for (size_t i = 0; i < fr.answers.size(); ++i) fr.hints.push_back(slipHint(fr.answers[i], fr.results[i], tolerance));
+        // Not all right here, every answer right one step earlier: steps counted from 1.
+        const long earlier = fr.step - 1;
+        if (fr.step > 0 && !allRight(fr.results) && states.has(earlier) && answersProblems(in, states.trace(earlier), scene, fr.file).isEmpty() &&
+            allRight(checkAnswers(*states.worldBefore(earlier), states.trace(earlier), fr.answers, tolerance))) {
+            fr.stepHint = QStringLiteral("steps count from 0: did you mean step %1? (every answer is right for step %1)")
+                              .arg(earlier);
+        }
+    }
+    int errorStatus = 0;
+    for (const FileResult& f : files) {
+        if (f.errorStatus == 0) continue;
+        fail(f.errorStatus, f.error);
+        if (errorStatus != kBadInput) errorStatus = f.errorStatus;
     }
 
     bool allCorrect = true;
@@ -146,10 +220,24 @@ int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, 
         return s;
     };
     QJsonArray jsonFiles;
-    if (format == "csv") out << "file,step,quantity,body,contact,index,verdict,expected,given,mistakes\n";
+    if (format == "csv") out << "file,step,quantity,body,contact,index,verdict,expected,given,mistakes,score,error\n";
     for (const FileResult& f : files) {
         QJsonArray results;
+        if (f.errorStatus != 0) {
+            // The row of a file that could not be checked: its error, first line in text.
+            if (format == "text") {
+                out << QFileInfo(f.file).fileName() << ": NOT CHECKED: " << f.error.section(QLatin1Char('\n'), 0, 0)
+                    << '\n';
+            } else if (format == "csv") {
+                out << csvField(f.file) << ",,,,,,error,,,,," << csvField(f.error) << '\n';
+            } else {
+                jsonFiles.append(QJsonObject{{"file", f.file}, {"scene", scenePath}, {"error", f.error}});
+            }
+            continue;
+        }
+        const Score score = scoreOf(f);
         if (format == "text") out << QFileInfo(f.file).fileName() << ", step " << f.step << ":\n";
+        if (format == "text" && !f.stepHint.isEmpty()) out << "  hint: " << f.stepHint << '\n';
         for (size_t i = 0; i < f.answers.size(); ++i) {
             const Answer& a = f.answers[i];
             const AnswerResult& r = f.results[i];
@@ -170,6 +258,7 @@ int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, 
                     if (!mistakes.isEmpty()) out << "\n          mistake: " << mistakes.join(", ");
                     if (!possible.isEmpty()) out << "\n          possible mistakes: " << possible.join("; ");
                     out << "\n          " << QString::fromStdString(r.explanation);
+                    if (!f.hints[i].isEmpty()) out << "\n          hint: " << f.hints[i];
                 }
                 out << '\n';
             } else if (format == "csv") {
@@ -178,7 +267,7 @@ int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, 
                     << (a.contact >= 0 ? QString::number(a.contact) : QString()) << ','
                     << (a.index >= 0 ? QString::number(a.index) : QString()) << ',' << verdictName(r.verdict) << ','
                     << csvField(numbers(r.expected)) << ',' << csvField(numbers(a.value)) << ','
-                    << csvField(mistakes.join(' ')) << '\n';
+                    << csvField(mistakes.join(' ')) << ',' << csvField(score.text()) << ",\n";
             } else {
                 QJsonObject o{{"quantity", QString::fromStdString(a.quantity)},
                               {"verdict", verdictName(r.verdict)},
@@ -190,14 +279,19 @@ int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, 
                 if (a.contact >= 0) o.insert("contact", a.contact);
                 else o.insert("body", QString::fromStdString(scene.bodies[a.body].name));
                 if (a.index >= 0) o.insert("index", a.index);
+                if (!f.hints[i].isEmpty()) o.insert("hint", f.hints[i]);
                 results.append(o);
             }
         }
-        jsonFiles.append(QJsonObject{{"file", f.file},
-                                     {"scene", scenePath},
-                                     {"step", static_cast<qint64>(f.step)},
-                                     {"tolerance", tolerance},
-                                     {"results", results}});
+        if (format == "text") out << "  score: " << score.text() << '\n';
+        QJsonObject fileJson{{"file", f.file},
+                             {"scene", scenePath},
+                             {"step", static_cast<qint64>(f.step)},
+                             {"tolerance", tolerance},
+                             {"score", score.json()},
+                             {"results", results}};
+        if (!f.stepHint.isEmpty()) fileJson.insert("hint", f.stepHint);
+        jsonFiles.append(fileJson);
     }
     if (format == "json") {
         out << QJsonDocument(jsonFiles.size() == 1 ? QJsonDocument(jsonFiles.first().toObject())
@@ -205,6 +299,7 @@ int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, 
                    .toJson(QJsonDocument::Indented);
     }
     out.flush();
+    if (errorStatus != 0) return errorStatus;
     return allCorrect ? kAllCorrect : kSomeWrong;
 }
 

@@ -67,6 +67,9 @@ ParsedAnswer parseAnswerText(const QString& text, int expectedCount)
         r.error = expectedCount == 1
                       ? QStringLiteral("1 number expected, got %1").arg(r.values.size())
                       : QStringLiteral("%1 numbers expected, got %2").arg(expectedCount).arg(r.values.size());
+        // "3,11" read as two numbers: a decimal comma.
+        static const QRegularExpression decimalComma(QStringLiteral("\\d,\\d"));
+        if (text.contains(decimalComma)) r.error += QStringLiteral(" (decimal commas? use a decimal point: 3.11, not 3,11)");
         r.values.clear();
     }
     return r;

@@ -1,15 +1,33 @@
 #include "app/exercise/answers_file.h"
 
+#include "app/exercise/answers_input.h"
+#include "physics/engine/quantity_catalogue.h"
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 
 #include <cmath>
 
 namespace rbw {
 
 namespace {
+
+const QString kDecimalPoint = QStringLiteral(" (decimal commas? use a decimal point: 3.11, not 3,11)");
+
+// [3,11, 1,07, -2,68]: twice 1, 3 or 4 numbers, every second one a whole number >= 0
+// (the digits after a decimal comma).
+bool looksLikeDecimalCommas(const QJsonArray& a)
+{
+    if (a.size() != 2 && a.size() != 6 && a.size() != 8) return false;
+    for (int i = 1; i < a.size(); i += 2) {
+        const double d = a[i].toDouble(-1.0);
+        if (!a[i].isDouble() || d < 0 || d != std::floor(d)) return false;
+    }
+    return true;
+}
 
 // Numbers of a value: 1, 3, 4 or 9 (three rows of three); empty with a reason otherwise.
 std::vector<double> valueOf(const QJsonValue& v, QString& reason)
@@ -29,6 +47,8 @@ std::vector<double> valueOf(const QJsonValue& v, QString& reason)
     }
     if (!v.isArray()) {
         reason = QStringLiteral("must be a number, a vector, a quaternion [w, x, y, z] or three rows of a matrix");
+        static const QRegularExpression decimalComma(QStringLiteral("\\d,\\d"));
+        if (v.isString() && v.toString().contains(decimalComma)) reason += kDecimalPoint;
         return {};
     }
     const QJsonArray a = v.toArray();
@@ -40,6 +60,7 @@ std::vector<double> valueOf(const QJsonValue& v, QString& reason)
         for (const QJsonValue& row : a) {
             if (!row.isArray() || row.toArray().size() != 3) {
                 reason = QStringLiteral("every row of a matrix must have 3 numbers");
+                if (row.isArray() && looksLikeDecimalCommas(row.toArray())) reason += kDecimalPoint;
                 return {};
             }
             for (const QJsonValue& x : row.toArray()) {
@@ -50,6 +71,7 @@ std::vector<double> valueOf(const QJsonValue& v, QString& reason)
     }
     if (a.size() != 3 && a.size() != 4) {
         reason = QStringLiteral("a vector has 3 numbers and a quaternion 4, got %1").arg(a.size());
+        if (looksLikeDecimalCommas(a)) reason += kDecimalPoint;
         return {};
     }
     for (const QJsonValue& x : a) {
@@ -80,7 +102,7 @@ AnswersFile parseAnswers(const QByteArray& json, const QString& fileLabel, const
     const QJsonObject top = doc.object();
     for (auto it = top.begin(); it != top.end(); ++it) {
         if (it.key() != QLatin1String("step") && it.key() != QLatin1String("answers")) {
-            error(it.key(), QStringLiteral("unknown key (the keys are \"step\" and \"answers\")"));
+            error(shownText(it.key()), QStringLiteral("unknown key (the keys are \"step\" and \"answers\")"));
         }
     }
     if (top.contains(QStringLiteral("step"))) {
@@ -108,7 +130,7 @@ AnswersFile parseAnswers(const QByteArray& json, const QString& fileLabel, const
             static const QStringList keys = {QStringLiteral("quantity"), QStringLiteral("body"),
                                              QStringLiteral("contact"), QStringLiteral("index"), QStringLiteral("value")};
             if (!keys.contains(it.key())) {
-                error(at + QLatin1Char('.') + it.key(), QStringLiteral("unknown key (known: %1)").arg(keys.join(", ")));
+                error(at + QLatin1Char('.') + shownText(it.key()), QStringLiteral("unknown key (known: %1)").arg(keys.join(", ")));
             }
         }
         Answer a;
@@ -117,6 +139,12 @@ AnswersFile parseAnswers(const QByteArray& json, const QString& fileLabel, const
             continue;
         }
         a.quantity = o.value(QStringLiteral("quantity")).toString().toStdString();
+        if (!isQuantityId(a.quantity)) {
+            error(at + QStringLiteral(".quantity"),
+                  QStringLiteral("unknown quantity \"%1\" (rbw quantities lists them)")
+                      .arg(shownText(o.value(QStringLiteral("quantity")).toString())));
+            continue;
+        }
         if (o.contains(QStringLiteral("body"))) {
             const QString name = o.value(QStringLiteral("body")).toString();
             a.body = scene.bodyIndex(name.toStdString());
@@ -124,7 +152,7 @@ AnswersFile parseAnswers(const QByteArray& json, const QString& fileLabel, const
                 QStringList names;
                 for (const BodyDef& b : scene.bodies) names << QString::fromStdString(b.name);
                 error(at + QStringLiteral(".body"),
-                      QStringLiteral("no body named \"%1\" (bodies: %2)").arg(name.left(80), names.join(", ")));
+                      QStringLiteral("no body named \"%1\" (bodies: %2)").arg(shownText(name), shownText(names.join(", "), 400)));
                 continue;
             }
         }
@@ -166,13 +194,14 @@ AnswersFile parseAnswers(const QByteArray& json, const QString& fileLabel, const
 
 AnswersFile loadAnswersFile(const QString& filePath, const SceneDef& scene)
 {
-    QFile file(filePath);
-    if (!file.open(QIODevice::ReadOnly)) {
+    QByteArray bytes;
+    QString error;
+    if (!readInputFile(filePath, &bytes, &error)) {
         AnswersFile f;
-        f.errors << QStringLiteral("%1: cannot open: %2").arg(filePath, file.errorString());
+        f.errors << error;
         return f;
     }
-    return parseAnswers(file.readAll(), filePath, scene);
+    return parseAnswers(bytes, filePath, scene);
 }
 
 QByteArray answersToJson(const std::vector<Answer>& answers, long step, const SceneDef& scene)

@@ -96,6 +96,12 @@ Outcome runCase(const QJsonObject& c, const QByteArray& base, QTemporaryDir& dir
         if (!f.open(QIODevice::WriteOnly)) qFatal("cannot write %s", qPrintable(scene));
         f.write(text);
     }
+    // "answers": the text of {dir}/answers.json, an answers file for rbw check.
+    if (c.contains(QStringLiteral("answers"))) {
+        QFile f(QFileInfo(scene).path() + QStringLiteral("/answers.json"));
+        if (!f.open(QIODevice::WriteOnly)) qFatal("cannot write answers.json");
+        f.write(c.value(QStringLiteral("answers")).toString().toUtf8());
+    }
     QStringList args;
     for (const QJsonValue& a : c.value(QStringLiteral("args")).toArray()) args << a.toString();
     if (args.isEmpty()) args = {QStringLiteral("run"), QStringLiteral("{scene}")};

@@ -72,6 +72,10 @@ void TestAnswerParser::rejected_data()
     QTest::newRow("vector for a number") << "1 2 3" << 1 << "1 number expected, got 3";
     QTest::newRow("matrix short a row") << "4.8 0 0; 0 9.836 0" << 9 << "9 numbers expected, got 6";
     QTest::newRow("two points") << "(-2.4, 4.9.1, 0)" << 3 << "cannot read '4.9.1'";
+    // Decimal commas (issue 21 item 6): read as separators, so twice the numbers, with a hint
+    // ("too few" above, "1.5, 2" style with a blank after the comma, gets none).
+    QTest::newRow("decimal commas") << "(-2,4, 4,918, -1,765)" << 3 << "3 numbers expected, got 6 (decimal commas? use a decimal point: 3.11, not 3,11)";
+    QTest::newRow("decimal comma, a number") << "2,37" << 1 << "1 number expected, got 2 (decimal commas? use a decimal point: 3.11, not 3,11)";
     QTest::newRow("a word") << "omega" << 1 << "cannot read 'omega'";
     QTest::newRow("half a fraction") << "64/" << 1 << "cannot read '64/'";
     QTest::newRow("two slashes") << "1/2/3" << 1 << "cannot read '1/2/3'";

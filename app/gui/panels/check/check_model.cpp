@@ -1,6 +1,7 @@
 #include "app/gui/panels/check/check_model.h"
 
 #include "app/exercise/answers_file.h"
+#include "app/exercise/answers_input.h"
 #include "app/output/value_format.h"
 #include "physics/workbook/checker/mistakes.h"
 
@@ -363,12 +364,26 @@ QByteArray CheckModel::answersJson() const
 
 bool CheckModel::loadAnswersJson(const QByteArray& json, const QString& label, QString* error, long* fileStep)
 {
-    const AnswersFile file = parseAnswers(json, label, scene_);
-    if (!file.ok()) {
-        if (error) *error = file.errors.join(QLatin1Char('\n'));
+    // What rbw check refuses, refused here with the same message (one code path:
+    // app/exercise/answers_input.h).
+    const AnswersInput in = readAnswersInput(json, label, scene_);
+    QStringList problems = in.errors;
+    if (problems.isEmpty()) {
+        if (in.step == trace_.step) {
+            problems = answersProblems(in, trace_, scene_, label);
+        } else {
+            StepStates states(scene_);
+            QString blowUp;
+            if (!states.prepare({in.step}, &blowUp)) problems << QStringLiteral("%1: step %2: %3").arg(label).arg(in.step).arg(blowUp);
+            else problems = answersProblems(in, states.trace(in.step), scene_, label);
+        }
+    }
+    if (!problems.isEmpty()) {
+        if (error) *error = problems.join(QLatin1Char('\n'));
         return false;
     }
-    const long step = file.step.value_or(0);
+    const AnswersFile& file = in.file;
+    const long step = in.step;
     if (fileStep) *fileStep = step;
     for (const Answer& a : file.answers) {
         Answer key = a;

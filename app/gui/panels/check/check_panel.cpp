@@ -2,6 +2,7 @@
 
 #include "app/output/atomic_file.h"
 
+#include "app/exercise/answers_input.h"
 #include "app/gui/panels/check/check_model.h"
 #include "physics/engine/scene.h"
 #include "physics/engine/trace.h"
@@ -13,6 +14,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QItemSelectionModel>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPainter>
@@ -130,8 +132,27 @@ CheckPanel::CheckPanel(QWidget* parent) : QWidget(parent)
             view_->setColumnWidth(c, std::min(view_->columnWidth(c), c == CheckModel::QuantityColumn ? 160 : 90));
         }
     });
+    view_->installEventFilter(this);
     updateHeader();
     onCurrentChanged();
+}
+
+bool CheckPanel::eventFilter(QObject* watched, QEvent* event)
+{
+    // A window shortcut is looked up before the key reaches the focused widget; the
+    // cell's editor (a QLineEdit) claims printable keys itself, but the key that opens
+    // the editor (AnyKeyPressed) reaches the table first and would be the shortcut.
+    if (watched == view_ && event->type() == QEvent::ShortcutOverride) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        const bool printable = !key->text().isEmpty() && key->text().at(0).isPrint() &&
+                               !(key->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier));
+        const QModelIndex current = view_->currentIndex();
+        if (printable && current.isValid() && (current.flags() & Qt::ItemIsEditable)) {
+            event->accept();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void CheckPanel::setStep(const QString& lesson, std::unique_ptr<World> before, const StepTrace* trace,
@@ -197,13 +218,14 @@ bool CheckPanel::saveAnswers(const QString& path, QString* error)
 
 bool CheckPanel::loadAnswers(const QString& path, QString* error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        if (error) *error = tr("%1: %2").arg(path, file.errorString());
+    QByteArray bytes;
+    QString readError;
+    if (!readInputFile(path, &bytes, &readError)) {   // the limit rbw check reads, too
+        if (error) *error = readError;
         return false;
     }
     long step = 0;
-    if (!model_->loadAnswersJson(file.readAll(), QFileInfo(path).fileName(), error, &step)) return false;
+    if (!model_->loadAnswersJson(bytes, QFileInfo(path).fileName(), error, &step)) return false;
     if (step != model_->step()) {
         explanation_->setHtml(tr("The file holds the answers of step %1; they show when you are at that step "
                                  "(this is step %2).")

@@ -44,6 +44,11 @@ public slots:
     // Selects the first quantity with nothing written; false if all are filled.
     bool selectNextEmpty();
 
+protected:
+    // The table owns the keyboard while a cell is (about to be) edited: a printable key
+    // on an editable cell is text, not the app's shortcut ("[" slower, Space play).
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void onCurrentChanged();
     void saveWithDialog();

@@ -24,6 +24,9 @@
 #include <QJsonObject>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QAction>
+#include <QApplication>
+#include <QSignalSpy>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
@@ -102,6 +105,9 @@ private slots:
     void nextStepSelectsFirstEmpty();
     void saveAndLoad();
     void keptPerLessonAndStep();
+    void loadRefusesWhatCheckRefuses_data();
+    void loadRefusesWhatCheckRefuses();
+    void typingOwnsTheKeyboard();
 };
 
 void TestCheckPanel::initTestCase()
@@ -302,6 +308,93 @@ void TestCheckPanel::keptPerLessonAndStep()
     w.stepOnce();
     QCOMPARE(m->index(row, CheckModel::YoursColumn).data().toString(), QString("(1, 2, 3)"));
     QCOMPARE(m->rowState(row), State::Wrong);
+}
+
+// The panel refuses exactly what rbw check refuses, with the same message (issue 22
+// item 5; one code path, app/exercise/answers_input.h; tst_check_cli has the same words).
+// Lesson 8 at step 0: two bodies, "standard" with probe 0, "template" with probe 1, no
+// contact, 1000 steps.
+void TestCheckPanel::loadRefusesWhatCheckRefuses_data()
+{
+    QTest::addColumn<QByteArray>("text");
+    QTest::addColumn<QString>("words");
+    QTest::newRow("unknown quantity") << QByteArray(R"({"answers": [{"quantity": "omega", "body": "standard", "value": 1}]})")
+                                      << "a.json: answers[0].quantity: unknown quantity \"omega\"";
+    QTest::newRow("contact 5, none in the step") << QByteArray(R"({"answers": [{"quantity": "impulse", "contact": 5, "value": 1}]})")
+                                                 << "a.json: answers[0]: no contact 5 in step 0 (it has 0)";
+    QTest::newRow("probe 7") << QByteArray(R"({"answers": [{"quantity": "point_velocity", "body": "standard", "index": 7, "value": [1, 2, 3]}]})")
+                             << "the probes of standard are 0";
+    QTest::newRow("no answers") << QByteArray(R"({"answers": []})") << "a.json: answers: there are no answers";
+    QTest::newRow("duplicate key") << QByteArray(R"({"step": 0, "step": 1, "answers": [{"quantity": "torque", "body": "standard", "value": [1, 2, 3]}]})")
+                                   << "a.json: step: duplicate key \"step\"";
+    QTest::newRow("step beyond") << QByteArray(R"({"step": 1000, "answers": [{"quantity": "torque", "body": "standard", "value": [1, 2, 3]}]})")
+                                 << "a.json: step: step 1000 is beyond the scene's 1000 steps (the last is step 999); steps count from 0: did you mean step 999?";
+    QTest::newRow("empty") << QByteArray("") << "a.json: the file is empty";
+}
+
+void TestCheckPanel::loadRefusesWhatCheckRefuses()
+{
+    QFETCH(QByteArray, text);
+    QFETCH(QString, words);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("a.json");
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(text);
+    f.close();
+    Lesson8 l;
+    QString error;
+    QVERIFY(!l.panel.loadAnswers(path, &error));
+    QVERIFY2(error.contains(words), qPrintable(error));
+    QCOMPARE(l.model()->index(l.omegaRow, CheckModel::YoursColumn).data().toString(), QString());   // nothing loaded
+}
+
+// The check table owns the keyboard while a cell is edited (issue 21 item 8): "[" (the
+// app's "Play slower") and Space ("Play") typed into the Yours cell are text, and
+// neither action fires nor the step changes. Negative control: on the quantity's name
+// (not editable) "[" is the app's key again.
+void TestCheckPanel::typingOwnsTheKeyboard()
+{
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openLesson("08-conventions"));
+    w.stepOnce();
+    auto* dock = w.findChild<QDockWidget*>("checkDock");
+    QVERIFY(dock != nullptr);
+    dock->show();
+    dock->raise();
+    auto* play = w.findChild<QAction*>("actionPlay");
+    auto* slower = w.findChild<QAction*>("actionSlower");
+    QVERIFY(play != nullptr && slower != nullptr);
+    QSignalSpy played(play, &QAction::triggered);
+    QSignalSpy slowed(slower, &QAction::triggered);
+    QTableView* view = w.checkPanel()->view();
+    CheckModel* m = w.checkPanel()->model();
+    const int row = m->rowOf("angular_velocity", 0);
+    w.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&w));
+    view->setFocus();
+    QTRY_VERIFY(view->hasFocus());
+
+    view->setCurrentIndex(m->index(row, CheckModel::QuantityColumn));
+    QTest::keyClicks(view, "[");
+    QCOMPARE(slowed.count(), 1);   // the control: the shortcut works here
+    slowed.clear();
+
+    view->setCurrentIndex(m->index(row, CheckModel::YoursColumn));
+    QTest::keyClicks(view, "[");   // opens the editor with "["
+    auto* editor = view->findChild<QLineEdit*>();
+    QVERIFY(editor != nullptr);
+    QTRY_VERIFY(editor->hasFocus());
+    QTest::keyClicks(QApplication::focusWidget(), "1 2 3]");
+    QCOMPARE(editor->text(), QString("[1 2 3]"));
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Return);
+    QTRY_COMPARE(m->index(row, CheckModel::YoursColumn).data().toString(), QString("[1 2 3]"));
+    QCOMPARE(played.count(), 0);
+    QCOMPARE(slowed.count(), 0);
+    QCOMPARE(m->step(), 0L);
+    QCOMPARE(m->rowState(row), State::Wrong);   // read and checked as (1, 2, 3)
 }
 
 int main(int argc, char* argv[])
