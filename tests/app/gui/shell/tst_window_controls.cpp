@@ -13,11 +13,16 @@
 #include <QtTest>
 #include "app/gui/panels/accuracy/accuracy_panel.h"
 #include "app/gui/panels/plots/body_plot_panel.h"
+#include "app/gui/panels/view/scene_end_bar.h"
 #include "app/gui/panels/view/view_style.h"
 #include "app/gui/style/body_colours.h"
 
 #include <QChart>
 #include <QChartView>
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QDialog>
 #include <QTableWidget>
 
@@ -37,6 +42,8 @@ private slots:
     void lessonTextsMatchTheWindow();
     void oneColourPerBody();
     void accuracyPanelFitsItsDock();
+    void playStopsAtTheScenesEnd();
+    void hBoxShowsAShortNumberAndEscapeDiscards();
 };
 
 void TestWindowControls::initTestCase()
@@ -286,5 +293,72 @@ void TestWindowControls::accuracyPanelFitsItsDock()
 }
 
 RBW_WINDOW_TEST_MAIN(TestWindowControls)
+
+void TestWindowControls::playStopsAtTheScenesEnd()
+{
+    // Issue 20, item 1: Play stops at the scene's `steps` (lesson 3: "steps": 3, the
+    // collision and one step after it) and the end bar says so; Continue plays on.
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openLesson("03-two-box-collision"));
+    const long end = w.world()->scene().steps;
+    QCOMPARE(end, 3L);
+    auto* bar = w.findChild<SceneEndBar*>();
+    QVERIFY(bar != nullptr);
+    QVERIFY(!bar->isVisible());
+    QAction* play = w.findChild<QAction*>("actionPlay");
+    play->trigger();
+    QVERIFY(play->isChecked());
+    QTRY_VERIFY_WITH_TIMEOUT(!play->isChecked(), 10000);
+    QCOMPARE(w.world()->stepIndex(), end);   // exactly at the end, not one step beyond
+    QVERIFY(bar->isVisible());
+    QVERIFY(bar->label()->text().contains(QString::number(end)));
+    // Continue: Play goes on past the end (a run started at the end does not stop there).
+    bar->continueButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(w.world()->stepIndex() > end + 5, 10000);
+    QVERIFY(play->isChecked());
+    play->trigger();   // pause
+    QVERIFY(!play->isChecked());
+}
+
+void TestWindowControls::hBoxShowsAShortNumberAndEscapeDiscards()
+{
+    // Issue 20, items 2 and 5: lesson 11's h = 1/60 reads "0.0166667" (6 figures, as the
+    // view's overlay writes it), and that text stands for the exact 1/60: leaving the box
+    // changes nothing. Typing 0.04 and pressing Escape discards it, and the keys go back
+    // to the 3D view (S steps with h still 1/60).
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&w));
+    QVERIFY(w.openLesson("11-resting-contact"));
+    const double h = w.world()->scene().dt;
+    QCOMPARE(h, 1.0 / 60.0);
+    auto* dtBox = w.findChild<QComboBox*>("dtBox");
+    QVERIFY(dtBox != nullptr);
+    QCOMPARE(dtBox->currentText(), QString("0.0166667"));
+    dtBox->setFocus(Qt::MouseFocusReason);
+    QTRY_VERIFY(dtBox->hasFocus());
+    dtBox->lineEdit()->selectAll();
+    QTest::keyClicks(dtBox, "0.04");
+    QCOMPARE(dtBox->currentText(), QString("0.04"));   // typed (control: the box takes keys)
+    QTest::keyClick(dtBox, Qt::Key_Escape);
+    QCOMPARE(dtBox->currentText(), QString("0.0166667"));
+    QTRY_VERIFY(w.findChild<QWidget*>("sceneView")->hasFocus());
+    QCOMPARE(w.world()->scene().dt, h);   // exactly 1/60, not 0.0166667 and not 0.04
+    QTest::keyClick(w.findChild<QWidget*>("sceneView"), Qt::Key_S);
+    QCOMPARE(w.world()->stepIndex(), 1L);
+    QCOMPARE(w.world()->scene().dt, h);
+    // Enter applies a typed value and also gives the keys back.
+    dtBox->setFocus(Qt::MouseFocusReason);
+    QTRY_VERIFY(dtBox->hasFocus());
+    dtBox->lineEdit()->selectAll();
+    QTest::keyClicks(dtBox, "0.01");
+    QTest::keyClick(dtBox, Qt::Key_Return);
+    QCOMPARE(w.world()->scene().dt, 0.01);
+    QTRY_VERIFY(w.findChild<QWidget*>("sceneView")->hasFocus());
+}
 
 #include "tst_window_controls.moc"
