@@ -1,4 +1,5 @@
 #include "app/exercise/answers_input.h"
+#include "app/scene/scene_format.h"
 
 #include "app/scene/strict_json_scan.h"
 #include "physics/engine/quantity_catalogue.h"
@@ -96,7 +97,7 @@ AnswersInput readAnswersInput(const QByteArray& json, const QString& label, cons
     const QString where = stepOption ? QStringLiteral("--step") : QStringLiteral("step");
     if (in.step >= scene.steps) {
         QString reason = scene.steps == 0
-                             ? QStringLiteral("the scene has no steps (\"steps\": 0)")
+                             ? QStringLiteral("the scene has no steps (\"%1\": 0)").arg(sceneformat::key(sceneformat::Key::Steps))
                              : QStringLiteral("step %1 is beyond the scene's %2 steps (the last is step %3)")
                                    .arg(in.step)
                                    .arg(scene.steps)
