@@ -3,6 +3,7 @@
 // graders and the tests. Exit status: 0 success, 2 bad input, 3 blow-up.
 #include "app/cli/check_command.h"
 #include "app/cli/contact_study_command.h"
+#include "app/cli/diagnose_command.h"
 #include "app/cli/exercise_command.h"
 #include "app/output/csv_output.h"
 #include "app/output/json_output.h"
@@ -323,7 +324,10 @@ int main(int argc, char* argv[])
         "                    energy gained against ns/step (CSV); --iterations, --dt, --t-end, --boxes\n"
         "  exercise LESSON --seed N\n"
         "                    the lesson's scene with new numbers (docs/exercises.md); --output FILE,\n"
-        "                    --worksheet F.html, --answer-key F.html, --answers-key F.json\n\n"
+        "                    --worksheet F.html, --answer-key F.html, --answers-key F.json\n"
+        "  diagnose --simulator \"CMD\"\n"
+        "                    run your own simulator through the motion probes and name its mistake\n"
+        "                    (docs/simulator-protocol.md); --timeout S, --format text|json\n\n"
         "Exit status: 0 success, 2 bad input (the message names the file, field and reason),\n"
         "3 the simulation blew up (the message names the step, body and quantity).\n\n"
         "Example:\n"
@@ -352,6 +356,8 @@ int main(int argc, char* argv[])
         {"worksheet", "For exercise: write the HTML worksheet (setup and an empty answer table) to FILE.", "FILE"},
         {"answer-key", "For exercise: write the worksheet filled with the workbook's numbers to FILE.", "FILE"},
         {"answers-key", "For exercise: write the key as an answers file (rbw check accepts it) to FILE.", "FILE"},
+        {"simulator", "For diagnose: the command that starts your simulator (docs/simulator-protocol.md).", "CMD"},
+        {"timeout", "For diagnose: seconds a probe may take (default 10).", "S"},
     });
     if (!parser.parse(QCoreApplication::arguments())) {
         return badInput(parser.errorText() + " (see rbw --help)");
@@ -390,5 +396,6 @@ int main(int argc, char* argv[])
         if (args.size() != 2) return badInput("exercise takes exactly one lesson, an id or a folder (see rbw --help)");
         return rbw::runExerciseCommand(parser, args[1]);
     }
+    if (command == "diagnose") return rbw::runDiagnoseCommand(parser, args.mid(1));
     return badInput("unknown command \"" + args.join(' ') + "\" (see rbw --help)");
 }
