@@ -1,6 +1,7 @@
 // rbw diagnose --simulator through the real binary (issue 23, docs/simulator-protocol.md):
 // the shipped reference simulator (examples/simulator/, target rbw_reference_simulator)
-// matches, in double and in float; with each motion mistake switched on (--mistake ID)
+// matches, in double and in float, and so do its Python twin and the TUM adapter around
+// the template stand-in (9 numbers an answer); with each motion mistake switched on (--mistake ID)
 // it is explained by exactly that id; programs that print nan, exit, hang or print
 // garbage (shell scripts written here) end with status 2, a message that names the
 // probe, the step and the command, and no process of theirs left running.
@@ -14,6 +15,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QThread>
 #include <QtTest>
@@ -21,6 +23,7 @@
 namespace {
 
 const QString kReference = QStringLiteral(RBW_REFERENCE_SIMULATOR_PATH);
+const QString kAdapterStub = QStringLiteral(RBW_TUM_ADAPTER_STUB_PATH);
 
 struct Diagnosed {
     int exitCode = -1;
@@ -58,14 +61,21 @@ private slots:
 
     void referenceMatches_data()
     {
-        QTest::addColumn<QString>("flags");
-        QTest::newRow("double") << QString();
-        QTest::newRow("float") << QStringLiteral(" --float");   // float round-off is within 1e-4
+        QTest::addColumn<QString>("simulator");
+        QTest::newRow("double") << kReference;
+        QTest::newRow("float") << kReference + " --float";   // float round-off is within 1e-4
+        // the TUM adapter around the template stand-in: 9 numbers per answer, no r
+        QTest::newRow("tum adapter, 9 numbers") << kAdapterStub;
+        const QString python = QStandardPaths::findExecutable("python3");
+        if (!python.isEmpty()) {
+            QTest::newRow("python twin")
+                << "\"" + python + "\" \"" RBW_SOURCE_DIR "/examples/simulator/reference_simulator.py\"";
+        }
     }
     void referenceMatches()
     {
-        QFETCH(QString, flags);
-        const Diagnosed run = diagnoseJson(kReference + flags);
+        QFETCH(QString, simulator);
+        const Diagnosed run = diagnoseJson(simulator);
         QCOMPARE(run.exitCode, 0);
         const QJsonObject& d = run.doc;
         QCOMPARE(d.value("verdict").toString(), QStringLiteral("matches"));
