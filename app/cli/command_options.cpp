@@ -18,6 +18,7 @@ const QMap<QString, QStringList>& table()
         {QStringLiteral("check"), {"step", "tolerance", "format"}},
         {QStringLiteral("contact-study"), {"iterations", "dt", "t-end", "boxes", "output"}},
         {QStringLiteral("exercise"), {"seed", "output", "worksheet", "answer-key", "answers-key"}},
+        {QStringLiteral("diagnose"), {"simulator", "timeout", "format"}},
         {QStringLiteral("quantities"), {"format"}},
         {QStringLiteral("lessons"), {}},
         {QStringLiteral("integrators"), {}},

@@ -4,6 +4,7 @@
 #include "app/cli/check_command.h"
 #include "app/cli/command_options.h"
 #include "app/cli/contact_study_command.h"
+#include "app/cli/diagnose_command.h"
 #include "app/cli/exercise_command.h"
 #include "app/cli/output_options.h"
 #include "app/cli/standard_output.h"
@@ -336,7 +337,10 @@ int dispatch(QCommandLineParser& parser)
         "                    energy gained against ns/step (CSV); --iterations, --dt, --t-end, --boxes\n"
         "  exercise LESSON --seed N\n"
         "                    the lesson's scene with new numbers (docs/exercises.md); --output FILE,\n"
-        "                    --worksheet F.html, --answer-key F.html, --answers-key F.json\n\n"
+        "                    --worksheet F.html, --answer-key F.html, --answers-key F.json\n"
+        "  diagnose --simulator \"CMD\"\n"
+        "                    run your own simulator through the motion probes and name its mistake\n"
+        "                    (docs/simulator-protocol.md); --timeout S, --format text|json\n\n"
         "Exit status: 0 success, 2 bad input (the message names the file, field and reason),\n"
         "3 the simulation blew up (the message names the step, body and quantity).\n\n"
         "Example:\n"
@@ -345,7 +349,7 @@ int dispatch(QCommandLineParser& parser)
         "  rbw study lessons/10-accuracy-lab/scene.json --integrators explicit-euler,rk4 --dt 0.1,0.01");
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument("command", "run, study, check, exercise, lessons, integrators or quantities");
+    parser.addPositionalArgument("command", "run, study, check, exercise, contact-study, diagnose, lessons, integrators or quantities");
     parser.addPositionalArgument("scene", "the scene file, for run and study", "[SCENE.json]");
     parser.addOptions({
         {"steps", "Number of steps to take (default: the scene's \"steps\").", "N"},
@@ -365,6 +369,8 @@ int dispatch(QCommandLineParser& parser)
         {"worksheet", "For exercise: write the HTML worksheet (setup and an empty answer table) to FILE.", "FILE"},
         {"answer-key", "For exercise: write the worksheet filled with the workbook's numbers to FILE.", "FILE"},
         {"answers-key", "For exercise: write the key as an answers file (rbw check accepts it) to FILE.", "FILE"},
+        {"simulator", "For diagnose: the command that starts your simulator (docs/simulator-protocol.md).", "CMD"},
+        {"timeout", "For diagnose: seconds a probe may take (default 10).", "S"},
     });
     if (!parser.parse(QCoreApplication::arguments())) {
         return badInput(parser.errorText() + " (see rbw --help)");
@@ -408,6 +414,7 @@ int dispatch(QCommandLineParser& parser)
         if (args.size() != 2) return badInput("exercise takes exactly one lesson, an id or a folder (see rbw --help)");
         return rbw::runExerciseCommand(parser, args[1]);
     }
+    if (command == "diagnose") return rbw::runDiagnoseCommand(parser, args.mid(1));
     return badInput("unknown command \"" + args.join(' ') + "\" (see rbw --help)");
 }
 

@@ -19,6 +19,8 @@ const std::vector<ScopedMistake>& mistakeScopes()
         {M::QuaternionNotNormalised, S::Motion, "r, then omega, of a spinning body"},
         {M::HalfExtentsForSize, S::Motion, "omega"},
         {M::InertiaAxesSwapped, S::Motion, "omega of a box with three different moments"},
+        {M::InertiaHalfExtentsWithoutThird, S::Motion, "omega (three times the right I0)"},
+        {M::OmegaAccumulated, S::Motion, "omega of a body that already turns"},
         {M::PointVelocityWithoutRotation, S::HandOnly,
          "a point's velocity v_p is written down only by hand; a simulator without contacts never "
          "forms it, and one with contacts is the collision group's impulse"},
@@ -30,6 +32,9 @@ const std::vector<ScopedMistake>& mistakeScopes()
         {M::ImpulseLinearOnly, S::Collision, "the impulse"},
         {M::ImpulseWithoutOnePlus, S::Collision, "the impulse"},
         {M::RestitutionOneMinus, S::Collision, "the impulse"},
+        {M::NoSeparatingCheck, S::Collision, "an impulse on a separating contact"},
+        {M::ImpulseLeverArmFromOrigin, S::Collision, "the impulse of a contact off the origin"},
+        {M::ImpulseDenominatorMissingCross, S::Collision, "the impulse of an off-centre contact"},
     };
     return all;
 }
