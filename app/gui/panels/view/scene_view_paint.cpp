@@ -30,10 +30,10 @@ void SceneView::paintLabels(QPainter& painter) const
     painter.setFont(font);
     const QFontMetrics fm(font);
     const view::Rgba axisColour[3] = {view::kAxisX, view::kAxisY, view::kAxisZ};
-    auto label = [&](const QPointF& at, const QString& text, QColor colour, bool boxed) {
+    auto label = [&](const QPointF& at, const QString& text, QColor colour, bool boxed, const QFontMetrics& m) {
         if (at.x() < 0.0 && at.y() < 0.0) return;   // behind the camera
-        const QRectF box(at.x() - fm.horizontalAdvance(text) / 2.0 - 3, at.y() - fm.height() / 2.0 - 1,
-                         fm.horizontalAdvance(text) + 6, fm.height() + 2);
+        const QRectF box(at.x() - m.horizontalAdvance(text) / 2.0 - 3, at.y() - m.height() / 2.0 - 1,
+                         m.horizontalAdvance(text) + 6, m.height() + 2);
         if (boxed) {
             painter.setPen(QColor(0, 0, 0, 60));
             painter.setBrush(QColor(255, 255, 255, 225));
@@ -43,9 +43,14 @@ void SceneView::paintLabels(QPainter& painter) const
         painter.drawText(box, Qt::AlignCenter, text);
     };
     for (const view::SceneLabel& l : labels_) {
-        label(projectToWidget(l.at_W), QString::fromStdString(l.text), toQColor(axisColour[l.axis]), false);
+        label(projectToWidget(l.at_W), QString::fromStdString(l.text), toQColor(axisColour[l.axis]), false, fm);
     }
-    // Body names: every body when switched on, else the one under the mouse.
+    // Body names: every body when switched on, else the one under the mouse; in a
+    // lighter, smaller font than the axis letters, so that neighbours' names overlap less.
+    QFont nameFont = font;
+    nameFont.setBold(false);
+    nameFont.setPointSizeF(8.5);
+    const QFontMetrics nameMetrics(nameFont);
     for (int b = 0; b < static_cast<int>(snapshot_.bodies.size()); ++b) {
         const ViewSnapshot::Body& body = snapshot_.bodies[static_cast<size_t>(b)];
         if (!body.finite || !(bodyNamesVisible_ || b == hoveredBody_)) continue;
@@ -53,7 +58,8 @@ void SceneView::paintLabels(QPainter& painter) const
         const Vec3 top_W = body.x_W + Vec3(0.0, (body.R_WB.cwiseAbs() * (0.5 * body.size)).y(), 0.0);
         QPointF at = projectToWidget(top_W) - QPointF(0.0, fm.height());
         if (b == hoveredBody_ && !bodyNamesVisible_) at = hoverPos_ + QPointF(0.0, -fm.height());
-        label(at, QString::fromStdString(body.name), QColor(30, 30, 35), true);
+        painter.setFont(nameFont);
+        label(at, QString::fromStdString(body.name), QColor(30, 30, 35), true, nameMetrics);
     }
 }
 
