@@ -57,7 +57,9 @@ void appendWorldReference(FrameGeometry& g, const ViewSnapshot& snap, const Fram
     area.add(options.sceneBox);
     w.spacing = niceGridSpacing(std::max(area.max_W.x() - area.min_W.x(), area.max_W.z() - area.min_W.z()));
     const Bounds bodies = bodyBounds(snap);
-    w.y0 = (bodies.valid() && bodies.min_W.y() < 0.0) ? std::floor(bodies.min_W.y() / w.spacing) * w.spacing : 0.0;
+    // The first grid line at or below the lowest body point; the 1e-9 keeps a box
+    // whose bottom is on a grid line up to round-off (cos 90° = 6e-17) on that line.
+    w.y0 = (bodies.valid() && bodies.min_W.y() < 0.0) ? std::floor(bodies.min_W.y() / w.spacing + 1e-9) * w.spacing : 0.0;
     // Whole cells, one spare cell on each side.
     const double x0 = (std::floor(area.min_W.x() / w.spacing) - 1.0) * w.spacing;
     const double x1 = (std::ceil(area.max_W.x() / w.spacing) + 1.0) * w.spacing;

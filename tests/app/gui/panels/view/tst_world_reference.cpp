@@ -40,6 +40,7 @@ private slots:
     void worldReferenceUnderTheBodies_data();
     void worldReferenceUnderTheBodies();
     void bodyAxesReachBeyondTheFaces();
+    void gridOnTheBottomOfARoundedBox();
 };
 
 void TestWorldReference::standardViews_data()
@@ -200,6 +201,22 @@ void TestWorldReference::bodyAxesReachBeyondTheFaces()
     for (int k = 0; k < view::kMaxLabelledBodies; ++k) s.bodies.push_back(b);
     const view::FrameGeometry many = view::buildFrameGeometry(s, {}, view::FrameOptions{});
     for (const view::SceneLabel& l : many.labels) QVERIFY(l.kind != view::SceneLabel::Kind::BodyAxis);
+}
+
+void TestWorldReference::gridOnTheBottomOfARoundedBox()
+{
+    // A 1 m cube whose centre is at y = -1e-16 (round-off, as a pose from a quaternion
+    // has): its bottom is -0.5 - 1e-16, which is -0.5000000000000001 in doubles. The
+    // area spans 1 m, so the spacing is 1/10 = 0.1 m, and the grid lies on the line
+    // y = -5 * 0.1 = -0.5, not a cell lower at -0.6.
+    ViewSnapshot s;
+    ViewSnapshot::Body b;
+    b.x_W = Vec3(0, -1e-16, 0);
+    s.bodies.push_back(b);
+    QVERIFY(view::bodyBounds(s).min_W.y() < -0.5);   // the round-off is there
+    const view::FrameGeometry g = view::buildFrameGeometry(s, {}, view::FrameOptions{});
+    RBW_COMPARE_NEAR_STRICT(g.world.spacing, 0.1, 1e-15);
+    RBW_COMPARE_NEAR_STRICT(g.world.y0, -0.5, 1e-12);
 }
 
 QTEST_GUILESS_MAIN(TestWorldReference)
