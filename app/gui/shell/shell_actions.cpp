@@ -195,6 +195,8 @@ ShellActions::ShellActions(MainWindow* window, ExerciseActions* exercise)
     simMenu->addActions({exercise->newNumbersAction(), exercise->exportWorksheetAction()});
     QMenu* viewMenu = w->menuBar()->addMenu(tr("&View"));
     viewMenu->addActions({trails, fit, resetView});
+    viewMenu->addActions(view->viewActions());   // front/top/side views (1-3), body names (N)
+    shortcutActions_ << view->viewActions();     // listed in Help → Keys
     // The state at each body's centre: v, ω and L arrows.
     const struct {
         QString text;

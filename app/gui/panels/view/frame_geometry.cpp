@@ -3,6 +3,7 @@
 #include "app/gui/panels/view/plane_patch.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rbw::view {
 
@@ -34,7 +35,64 @@ void appendPlane(std::vector<PlaneVertex>& out, const std::vector<Vec3>& polygon
     }
 }
 
+const char* const kAxisNames[3] = {"x", "y", "z"};
+
+// The world axes at the origin (opaque, depth-tested: a box hides the part inside
+// it) and a light grid at y = y0 below the bodies, spanning the scene box and the origin.
+void appendWorldReference(FrameGeometry& g, const ViewSnapshot& snap, const FrameOptions& options, double ref)
+{
+    WorldReference& w = g.world;
+    w.shown = true;
+    w.axisLength = kWorldAxisLength * ref;
+    const Rgba axisColour[3] = {kAxisX, kAxisY, kAxisZ};
+    for (int j = 0; j < 3; ++j) {
+        const Vec3 e = Vec3::Unit(j);
+        appendArrow(g.lit, Vec3::Zero(), w.axisLength * e, 0.018 * ref, axisColour[j]);
+        g.labels.push_back(SceneLabel{SceneLabel::Kind::WorldAxis, -1, j, (w.axisLength + 0.12 * ref) * e, kAxisNames[j]});
+    }
+
+    Bounds area;
+    area.add(Vec3::Zero());
+    area.add(bodyBounds(snap));
+    area.add(options.sceneBox);
+    w.spacing = niceGridSpacing(std::max(area.max_W.x() - area.min_W.x(), area.max_W.z() - area.min_W.z()));
+    const Bounds bodies = bodyBounds(snap);
+    // The first grid line at or below the lowest body point; the 1e-9 keeps a box
+    // whose bottom is on a grid line up to round-off (cos 90° = 6e-17) on that line.
+    w.y0 = (bodies.valid() && bodies.min_W.y() < 0.0) ? std::floor(bodies.min_W.y() / w.spacing + 1e-9) * w.spacing : 0.0;
+    // Whole cells, one spare cell on each side.
+    const double x0 = (std::floor(area.min_W.x() / w.spacing) - 1.0) * w.spacing;
+    const double x1 = (std::ceil(area.max_W.x() / w.spacing) + 1.0) * w.spacing;
+    const double z0 = (std::floor(area.min_W.z() / w.spacing) - 1.0) * w.spacing;
+    const double z1 = (std::ceil(area.max_W.z() / w.spacing) + 1.0) * w.spacing;
+    w.min_W = Vec3(x0, w.y0, z0);
+    w.max_W = Vec3(x1, w.y0, z1);
+    const int nx = static_cast<int>(std::lround((x1 - x0) / w.spacing));
+    const int nz = static_cast<int>(std::lround((z1 - z0) / w.spacing));
+    if (nx > 400 || nz > 400) return;   // a scene box gone huge (a blow-up): no grid
+    for (int i = 0; i <= nx; ++i) {
+        const double x = x0 + i * w.spacing;
+        appendLine(g.lines, Vec3(x, w.y0, z0), Vec3(x, w.y0, z1), kGrid);
+    }
+    for (int k = 0; k <= nz; ++k) {
+        const double z = z0 + k * w.spacing;
+        appendLine(g.lines, Vec3(x0, w.y0, z), Vec3(x1, w.y0, z), kGrid);
+    }
+    w.lineCount = nx + nz + 2;
+}
+
 } // namespace
+
+double niceGridSpacing(double extent)
+{
+    if (!std::isfinite(extent) || extent <= 0.0) return 1.0;
+    const double target = std::max(extent / 10.0, 1e-3);
+    const double decade = std::pow(10.0, std::floor(std::log10(target)));
+    for (double m : {1.0, 2.0, 5.0}) {
+        if (m * decade >= target) return m * decade;
+    }
+    return 10.0 * decade;
+}
 
 Bounds bodyBounds(const ViewSnapshot& snap)
 {
@@ -72,7 +130,9 @@ FrameGeometry buildFrameGeometry(const ViewSnapshot& snap, const std::vector<std
     g.lines.reserve(snap.bodies.size() * 30);
 
     // Bodies: shaded box, dark outline, and the body axes x (red), y (green), z (blue)
-    // from the centre to a little beyond each face.
+    // as thin arrows from the centre to well beyond each face. They are overlay
+    // geometry, so the part inside the box shows through it (the x-ray pass).
+    const bool labelBodies = static_cast<int>(snap.bodies.size()) <= kMaxLabelledBodies;
     for (int b = 0; b < static_cast<int>(snap.bodies.size()); ++b) {
         const ViewSnapshot::Body& body = snap.bodies[b];
         if (!body.finite) continue;
@@ -80,12 +140,20 @@ FrameGeometry buildFrameGeometry(const ViewSnapshot& snap, const std::vector<std
         if (b == options.highlightBody) colour = lighter(colour, 0.35f);
         appendBox(g.lit, body.x_W, body.R_WB, body.size, colour);
         appendBoxEdges(g.lines, body.x_W, body.R_WB, body.size, kEdge);
-        const double poke = 0.3 * body.size.maxCoeff();
+        const double poke = kBodyAxisPoke * body.size.maxCoeff();
         const Rgba axisColour[3] = {kAxisX, kAxisY, kAxisZ};
         for (int j = 0; j < 3; ++j) {
-            appendLine(g.lines, body.x_W, body.x_W + (0.5 * body.size[j] + poke) * body.R_WB.col(j), axisColour[j]);
+            const Vec3 tip_W = body.x_W + (0.5 * body.size[j] + poke) * body.R_WB.col(j);
+            appendArrow(g.overlay, body.x_W, tip_W - body.x_W, 0.012 * ref, axisColour[j]);
+            if (labelBodies) {
+                g.labels.push_back(SceneLabel{SceneLabel::Kind::BodyAxis, b, j,
+                                              tip_W + 0.08 * body.size.maxCoeff() * body.R_WB.col(j),
+                                              std::string(kAxisNames[j]) + "_B"});
+            }
         }
     }
+    // The world reference locates bodies; a scene without bodies stays blank.
+    if (options.worldReference && !snap.bodies.empty()) appendWorldReference(g, snap, options, ref);
 
     // Motion trails of the centres of mass.
     if (options.trails) {
@@ -127,6 +195,19 @@ FrameGeometry buildFrameGeometry(const ViewSnapshot& snap, const std::vector<std
             arrow(translucent, ArrowKind::ForceDone, f.body, f.index, f.origin_W, f.origin_W + d, f.f_W, shaft,
                   kForceDone);
         }
+    }
+
+    // Torques (couples q_j): at the centre of mass x, with their own scale (N m).
+    for (const ViewSnapshot::Torque& t : snap.torques) {
+        if (t.q_W.norm() <= 0.0 || t.body < 0 || t.body >= static_cast<int>(snap.bodies.size())) continue;
+        s.maxTorque = std::max(s.maxTorque, t.q_W.norm());
+        s.hasTorque = true;
+    }
+    const double torqueScale = arrowScale(s.maxTorque, ref);
+    for (const ViewSnapshot::Torque& t : snap.torques) {
+        if (t.body < 0 || t.body >= static_cast<int>(snap.bodies.size())) continue;
+        const Vec3& x_W = snap.bodies[t.body].x_W;
+        arrow(g.overlay, ArrowKind::Torque, t.body, t.index, x_W, x_W + torqueScale * t.q_W, t.q_W, 1.2 * shaft, kTorque);
     }
 
     // Probes: the point and its velocity v_p.

@@ -12,6 +12,7 @@
 #include "app/gui/panels/view/view_snapshot.h"
 
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace rbw::view {
@@ -51,7 +52,37 @@ struct FrameOptions {
     bool velocity = false;         // v
     bool angularVelocity = false;  // ω
     bool angularMomentum = false;  // L (drawn translucent and wider, so ω shows inside it)
+    bool worldReference = true;    // the world axes at the origin and the ground grid (scenes with bodies)
 };
+
+// A text the view writes next to a point of the scene (an axis tip).
+struct SceneLabel {
+    enum class Kind { WorldAxis, BodyAxis };
+    Kind kind = Kind::WorldAxis;
+    int body = -1;        // the body of a body axis
+    int axis = 0;         // 0, 1, 2: x, y, z
+    Vec3 at_W = Vec3::Zero();
+    std::string text;     // UTF-8
+};
+
+// The world reference: axes x, y, z from the origin and a square grid in a
+// horizontal plane y = y0 (the world's up is +y), under the bodies.
+struct WorldReference {
+    bool shown = false;
+    double axisLength = 0.0;   // m
+    double spacing = 0.0;      // m between grid lines (1, 2 or 5 times a power of ten)
+    double y0 = 0.0;           // m: 0, or lower when a body reaches below y = 0
+    Vec3 min_W = Vec3::Zero();   // the grid's corners (min_W.y() = max_W.y() = y0)
+    Vec3 max_W = Vec3::Zero();
+    int lineCount = 0;
+};
+
+// The body axes are drawn as thin arrows this far beyond each face, as a fraction
+// of the body's longest edge, and the world axes this many reference lengths long.
+inline constexpr double kBodyAxisPoke = 0.35;
+inline constexpr double kWorldAxisLength = 1.5;
+// Body axes are labelled x_B, y_B, z_B when a scene has at most this many bodies.
+inline constexpr int kMaxLabelledBodies = 4;
 
 // Every arrow of a frame, for the legend and the tests: what it shows and where it
 // is drawn from and to (the head at `to_W`).
@@ -59,6 +90,7 @@ enum class ArrowKind {
     Force,            // f_i at p_i, acting in the next step
     ForceDone,        // f_i of the step just taken that does not act again (faded)
     Gravity,          // M g, drawn ending at x
+    Torque,           // a couple q_j of the step just taken, at x
     ProbeVelocity,    // v_p at the probe point
     Normal,           // the unit normal n, from p into A
     NormalImpulse,    // J n on A, ending at p
@@ -81,6 +113,7 @@ struct ArrowRecord {
 struct ArrowScales {
     double refLength = 1.0;       // m on screen
     double maxForce = 0.0;        // N   (applied forces and gravity share one scale)
+    double maxTorque = 0.0;       // N m (couples q_j)
     double maxVelocity = 0.0;     // m/s (probe velocities)
     double maxImpulse = 0.0;      // N s (J n, J_t t and their sum share one scale)
     double maxBodyVelocity = 0.0;   // m/s (v at x)
@@ -89,6 +122,7 @@ struct ArrowScales {
     bool hasGravity = false;
     bool hasApplied = false;
     bool hasAppliedDone = false;
+    bool hasTorque = false;
     bool hasProbes = false;
     bool hasContacts = false;
     bool hasFriction = false;
@@ -105,7 +139,12 @@ struct FrameGeometry {
     std::vector<PlaneVertex> planes;   // triangles, farthest plane first
     ArrowScales scales;
     std::vector<ArrowRecord> arrows;
+    std::vector<SceneLabel> labels;   // axis names at the axis tips
+    WorldReference world;
 };
+
+// A spacing of 1, 2 or 5 times a power of ten, near extent / 10 (at least 1 mm).
+double niceGridSpacing(double extent);
 
 FrameGeometry buildFrameGeometry(const ViewSnapshot& snap, const std::vector<std::vector<Vec3>>& trails,
                                  const FrameOptions& options);

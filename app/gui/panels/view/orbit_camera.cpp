@@ -26,8 +26,9 @@ void OrbitCamera::setAngles(double yawDeg, double pitchDeg)
 {
     if (!std::isfinite(yawDeg) || !std::isfinite(pitchDeg)) return;
     yawDeg_ = std::remainder(yawDeg, 360.0);
-    // Stay off the poles, where "up" and the view direction would be parallel.
-    pitchDeg_ = std::clamp(pitchDeg, -89.0, 89.0);
+    // The poles are allowed (the top view looks straight down): right() does not
+    // depend on the pitch, so the camera axes stay defined there.
+    pitchDeg_ = std::clamp(pitchDeg, -90.0, 90.0);
 }
 
 Vec3 OrbitCamera::eye() const
@@ -40,7 +41,12 @@ Vec3 OrbitCamera::eye() const
 
 Vec3 OrbitCamera::forward() const { return (target_W_ - eye()).normalized(); }
 
-Vec3 OrbitCamera::right() const { return forward().cross(Vec3::UnitY()).normalized(); }
+Vec3 OrbitCamera::right() const
+{
+    // forward x y normalised, in closed form: forward = -back gives forward x y =
+    // cos(pitch) (cos(yaw), 0, -sin(yaw)), so right = (cos(yaw), 0, -sin(yaw)), also at the poles.
+    return Vec3(std::cos(rad(yawDeg_)), 0.0, -std::sin(rad(yawDeg_)));
+}
 
 Vec3 OrbitCamera::up() const { return right().cross(forward()); }
 
@@ -80,7 +86,11 @@ OrbitCamera::Mat4 OrbitCamera::projectionMatrix(double aspect) const
 void OrbitCamera::orbit(double dxPx, double dyPx)
 {
     // Dragging right turns the scene right (the eye moves left); dragging down lifts the eye.
-    setAngles(yawDeg_ - kDegPerPixel * dxPx, pitchDeg_ + kDegPerPixel * dyPx);
+    // A vertical drag stays off the poles; a horizontal one keeps the pitch, so a
+    // top view (pitch 90) can be turned about the vertical.
+    double pitch = pitchDeg_;
+    if (dyPx != 0.0) pitch = std::clamp(pitchDeg_ + kDegPerPixel * dyPx, -89.0, 89.0);
+    setAngles(yawDeg_ - kDegPerPixel * dxPx, pitch);
 }
 
 void OrbitCamera::pan(double dxPx, double dyPx, double viewportHeightPx)
@@ -95,6 +105,16 @@ void OrbitCamera::pan(double dxPx, double dyPx, double viewportHeightPx)
 void OrbitCamera::zoom(double wheelSteps)
 {
     if (std::isfinite(wheelSteps)) setDistance(distance_ * std::pow(kZoomPerStep, wheelSteps));
+}
+
+void OrbitCamera::setStandardView(StandardView v)
+{
+    // back(yaw, pitch) = (cos p sin y, sin p, cos p cos y) points from the target to the eye.
+    switch (v) {
+    case StandardView::Front: setAngles(0.0, 0.0); break;   // eye on +z: right +x, up +y
+    case StandardView::Top: setAngles(0.0, 90.0); break;    // eye on +y: right +x, up -z
+    case StandardView::Side: setAngles(90.0, 0.0); break;   // eye on +x: right -z, up +y
+    }
 }
 
 void OrbitCamera::frame(const Vec3& centre_W, double radius, double aspect)

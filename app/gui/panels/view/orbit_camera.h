@@ -5,7 +5,7 @@
 //   target_W   the point the camera orbits and looks at             [m]
 //   eye_W      camera position, target_W + distance * back(yaw, pitch) [m]
 //   yaw        angle about +y, 0 looks from +z towards -z            [deg]
-//   pitch      elevation above the x-z plane, |pitch| < 90           [deg]
+//   pitch      elevation above the x-z plane, |pitch| <= 90          [deg]
 //   fovY       vertical field of view                                [deg]
 //   ndc        normalised device coordinates, x right, y up, in [-1, 1]
 //
@@ -25,6 +25,13 @@ struct Ray {
     Vec3 origin_W = Vec3::Zero();
     Vec3 dir_W = -Vec3::UnitZ();
 };
+
+// The standard views (keys 1-3). The world's up is +y (gravity (0, -g, 0)); each
+// view is named after where the eye is and what the screen's right and up are:
+//   Front  seen from +z, looking along -z: +x right, +y up (lesson 7's "seen from +z")
+//   Top    seen from +y, looking along -y: +x right, -z up
+//   Side   seen from +x, looking along -x: -z right, +y up
+enum class StandardView { Front, Top, Side };
 
 class OrbitCamera {
 public:
@@ -52,6 +59,9 @@ public:
 
     Mat4 viewMatrix() const;                        // V: world -> camera
     Mat4 projectionMatrix(double aspect) const;     // P: perspective, aspect = width/height
+
+    // Sets the angles of a standard view; keeps the target and distance.
+    void setStandardView(StandardView v);
 
     // Mouse gestures, in widget pixels.
     void orbit(double dxPx, double dyPx);

@@ -5,12 +5,12 @@
 #include "app/gui/panels/view/ray_pick.h"
 #include "app/gui/panels/view/view_style.h"
 
+#include <QAction>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QPainter>
-#include <QPainterPath>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 #include <QtDebug>
@@ -23,15 +23,7 @@ namespace {
 
 constexpr size_t kMaxTrailPoints = 4000;
 
-QColor toQColor(view::Rgba c) { return QColor::fromRgbF(c.r, c.g, c.b, c.a); }
-
 QVector3D toQt(const Vec3& v) { return QVector3D(float(v.x()), float(v.y()), float(v.z())); }
-
-// A magnitude for the legend, 3 significant digits.
-QString magnitude(double value, const char* unit)
-{
-    return QStringLiteral("%1 %2").arg(QString::number(value, 'g', 3), QString::fromUtf8(unit));
-}
 
 } // namespace
 
@@ -40,11 +32,48 @@ SceneView::SceneView(QWidget* parent)
 {
     setFormat(requestedFormat());
     setFocusPolicy(Qt::ClickFocus);
-    setMouseTracking(false);
+    setMouseTracking(true);   // hovering names the body under the mouse
     glError_ = tr("OpenGL is not initialised yet.");
+    createViewActions();
     setToolTip(tr("Left-drag: orbit, or drag a box · Alt+left-drag: orbit · right/middle-drag: pan · wheel: zoom\n"
-                  "F: frame the bodies · Home: reset the view\n"
+                  "F: frame the bodies · Home: reset the view · 1/2/3: front/top/side view · N: body names\n"
                   "Arrow lengths: the longest arrow of each kind is drawn one box long (see the legend)."));
+}
+
+void SceneView::createViewActions()
+{
+    const struct {
+        QString text;
+        const char* name;
+        Qt::Key key;
+        StandardView view;
+    } views[] = {{tr("&Front view (seen from +z: x right, y up)"), "actionFrontView", Qt::Key_1, StandardView::Front},
+                 {tr("&Top view (seen from +y: x right, −z up)"), "actionTopView", Qt::Key_2, StandardView::Top},
+                 {tr("&Side view (seen from +x: −z right, y up)"), "actionSideView", Qt::Key_3, StandardView::Side}};
+    for (const auto& v : views) {
+        auto* a = new QAction(v.text, this);
+        a->setObjectName(QString::fromLatin1(v.name));
+        a->setShortcut(QKeySequence(v.key));
+        const StandardView which = v.view;
+        connect(a, &QAction::triggered, this, [this, which] { setStandardView(which); });
+        viewActions_.push_back(a);
+    }
+    auto* names = new QAction(tr("Body &names"), this);
+    names->setObjectName("actionBodyNames");
+    names->setShortcut(QKeySequence(Qt::Key_N));
+    names->setCheckable(true);
+    connect(names, &QAction::toggled, this, &SceneView::setBodyNamesVisible);
+    viewActions_.push_back(names);
+    addActions(viewActions_);
+}
+
+QAction* SceneView::viewActionFor(const QKeyEvent* event) const
+{
+    if (event->modifiers() != Qt::NoModifier && event->modifiers() != Qt::KeypadModifier) return nullptr;
+    for (QAction* a : viewActions_) {
+        if (a->shortcut() == QKeySequence(event->key())) return a;
+    }
+    return nullptr;
 }
 
 SceneView::~SceneView()
@@ -125,6 +154,8 @@ void SceneView::paintGL()
     const view::FrameGeometry geometry = buildFrameGeometry(snapshot_, trails_, frameOptions());
     scales_ = geometry.scales;
     arrows_ = geometry.arrows;
+    world_ = geometry.world;
+    labels_ = geometry.labels;
 
     // clip = P V p
     const Eigen::Matrix4d PV = camera_.projectionMatrix(aspect()) * camera_.viewMatrix();
@@ -132,6 +163,7 @@ void SceneView::paintGL()
 
     painter.begin(this);
     painter.setRenderHint(QPainter::Antialiasing);
+    paintLabels(painter);
     paintLegend(painter);
     paintInfo(painter);
 }
@@ -198,109 +230,6 @@ QString SceneView::infoText() const
         text += tr(" · following %1").arg(QString::fromStdString(snapshot_.bodies[static_cast<size_t>(followBody_)].name));
     }
     return text;
-}
-
-void SceneView::paintInfo(QPainter& painter) const
-{
-    if (!hasSnapshot_) return;
-    QFont font = painter.font();
-    font.setPointSizeF(9.0);
-    painter.setFont(font);
-    const QFontMetrics fm(font);
-    const QString text = infoText();
-    const QRect box(8, 8, fm.horizontalAdvance(text) + 16, fm.height() + 10);
-    painter.setPen(QColor(0, 0, 0, 40));
-    painter.setBrush(QColor(255, 255, 255, 215));
-    painter.drawRoundedRect(box, 6, 6);
-    painter.setPen(QColor(30, 30, 35));
-    painter.drawText(box, Qt::AlignCenter, text);
-}
-
-void SceneView::paintGlError(QPainter& painter) const
-{
-    painter.fillRect(rect(), QColor(235, 238, 242));
-    painter.setPen(QColor(120, 20, 20));
-    painter.drawText(rect().adjusted(16, 16, -16, -16), Qt::AlignCenter | Qt::TextWordWrap, glError_);
-}
-
-void SceneView::paintLegend(QPainter& painter) const
-{
-    const view::ArrowScales& s = scales_;
-    struct Row {
-        view::Rgba colour;
-        QString text;
-    };
-    std::vector<Row> rows;
-    const QString box = tr("1 box = %1").arg(magnitude(s.refLength, "m"));
-    if (s.hasApplied) rows.push_back({view::kForce, tr("force fᵢ at pᵢ, acts in step %1").arg(snapshot_.nextStep)});
-    if (s.hasAppliedDone) rows.push_back({view::kForceDone, tr("force fᵢ of the step just taken (faded)")});
-    if (s.hasGravity) rows.push_back({view::kGravity, tr("gravity M·g, ending at x")});
-    if (s.hasApplied || s.hasAppliedDone || s.hasGravity) {
-        rows.back().text += tr("  (longest %1)").arg(magnitude(s.maxForce, "N"));
-    }
-    if (s.hasProbes) rows.push_back({view::kProbe, tr("probe p, velocity v_p  (longest %1)").arg(magnitude(s.maxVelocity, "m/s"))});
-    if (s.hasContacts) {
-        rows.push_back({view::kContact, tr("contact p, normal n into A  (unit, ½ box)")});
-        rows.push_back({view::kImpulse, s.maxImpulse > 0.0 ? tr("impulse J·n on A, ending at p  (longest %1)").arg(magnitude(s.maxImpulse, "N·s"))
-                                                            : tr("impulse J·n on A  (none: separating)")});
-        if (s.hasFriction) {
-            rows.push_back({view::kFriction, tr("friction impulse Jₜ·t on A, ending at p")});
-            rows.push_back({view::kTotalImpulse, tr("total impulse J·n + Jₜ·t on A")});
-        }
-    }
-    if (s.hasVelocity) rows.push_back({view::kVelocity, tr("velocity v at x  (longest %1)").arg(magnitude(s.maxBodyVelocity, "m/s"))});
-    if (s.hasOmega) rows.push_back({view::kOmega, tr("angular velocity ω at x  (longest %1)").arg(magnitude(s.maxOmega, "rad/s"))});
-    if (s.hasL) rows.push_back({view::kAngularMomentum, tr("angular momentum L at x  (longest %1)").arg(magnitude(s.maxL, "N·m·s"))});
-    if (s.hasSpring) rows.push_back({view::kSpring, tr("drag spring")});
-
-    QFont font = painter.font();
-    font.setPointSizeF(8.5);
-    painter.setFont(font);
-    const QFontMetrics fm(font);
-    const int line = fm.height() + 2;
-    const int swatch = 18;
-    int textWidth = fm.horizontalAdvance(tr("axes x y z (body frame)"));
-    for (const Row& r : rows) textWidth = std::max(textWidth, fm.horizontalAdvance(r.text));
-    const QString header = rows.size() > 0 ? tr("Arrows: longest of each kind = 1 box (%1)").arg(box) : QString();
-    textWidth = std::max(textWidth, fm.horizontalAdvance(header) - swatch - 6);
-    const int lineCount = int(rows.size()) + 1 + (header.isEmpty() ? 0 : 1);
-    const QRect panel(8, height() - 8 - lineCount * line - 10, textWidth + swatch + 22, lineCount * line + 10);
-
-    painter.setPen(QColor(0, 0, 0, 40));
-    painter.setBrush(QColor(255, 255, 255, 215));
-    painter.drawRoundedRect(panel, 6, 6);
-    int y = panel.top() + 5;
-    auto drawRow = [&](const QString& text) {
-        painter.setPen(QColor(30, 30, 35));
-        painter.drawText(QRect(panel.left() + swatch + 14, y, textWidth + 4, line), Qt::AlignVCenter | Qt::AlignLeft, text);
-    };
-    if (!header.isEmpty()) {
-        painter.setPen(QColor(60, 60, 70));
-        painter.drawText(QRect(panel.left() + 8, y, panel.width() - 12, line), Qt::AlignVCenter | Qt::AlignLeft, header);
-        y += line;
-    }
-    for (const Row& r : rows) {
-        const int cy = y + line / 2;
-        painter.setPen(QPen(toQColor(r.colour), 3, Qt::SolidLine, Qt::RoundCap));
-        painter.drawLine(panel.left() + 8, cy, panel.left() + 8 + swatch - 5, cy);
-        // A small arrow head on the swatch.
-        QPainterPath head;
-        head.moveTo(panel.left() + 8 + swatch, cy);
-        head.lineTo(panel.left() + 8 + swatch - 6, cy - 4);
-        head.lineTo(panel.left() + 8 + swatch - 6, cy + 4);
-        head.closeSubpath();
-        painter.fillPath(head, toQColor(r.colour));
-        drawRow(r.text);
-        y += line;
-    }
-    // Body axes: three short coloured strokes.
-    const int cy = y + line / 2;
-    const view::Rgba axes[3] = {view::kAxisX, view::kAxisY, view::kAxisZ};
-    for (int j = 0; j < 3; ++j) {
-        painter.setPen(QPen(toQColor(axes[j]), 2));
-        painter.drawLine(panel.left() + 8 + 6 * j, cy + 5, panel.left() + 8 + 6 * j + 3, cy - 5);
-    }
-    drawRow(tr("axes x y z (body frame)"));
 }
 
 bool SceneView::sameScene(const ViewSnapshot& other) const
@@ -384,6 +313,31 @@ void SceneView::setTrailsVisible(bool visible)
 {
     trailsVisible_ = visible;
     update();
+}
+
+void SceneView::setStandardView(StandardView v)
+{
+    camera_.setStandardView(v);
+    fitToScene();
+}
+
+void SceneView::setBodyNamesVisible(bool on)
+{
+    bodyNamesVisible_ = on;
+    update();
+}
+
+void SceneView::setHoveredBody(int body)
+{
+    if (body == hoveredBody_) return;
+    hoveredBody_ = body;
+    update();
+}
+
+void SceneView::leaveEvent(QEvent* event)
+{
+    setHoveredBody(-1);
+    QOpenGLWidget::leaveEvent(event);
 }
 
 void SceneView::resetView()
@@ -495,8 +449,14 @@ void SceneView::mouseMoveEvent(QMouseEvent* event)
         }
         break;
     }
-    case DragMode::None:
+    case DragMode::None: {
+        // Hovering: name the body under the mouse.
+        hoverPos_ = event->position();
+        const std::optional<Pick> hit = pick(event->position().toPoint());
+        setHoveredBody(hit ? hit->body : -1);
+        if (hit) update();   // the name follows the mouse
         break;
+    }
     }
     event->accept();
 }
@@ -526,6 +486,8 @@ void SceneView::keyPressEvent(QKeyEvent* event)
         fitToScene();
     } else if (event->key() == Qt::Key_Home) {
         resetView();
+    } else if (QAction* a = viewActionFor(event)) {
+        a->trigger();   // the keys of the view's actions, when no window shortcut took them
     } else {
         QOpenGLWidget::keyPressEvent(event);
     }

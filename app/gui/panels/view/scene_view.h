@@ -6,7 +6,9 @@
 //
 // Mouse: left-drag on empty space (or Alt+left-drag anywhere) orbits; right- or
 // middle-drag pans; the wheel zooms; left-press on a movable box grabs it.
-// Keys: F frames the bodies, Home resets the view.
+// Keys: F frames the bodies, Home resets the view; 1, 2, 3 the front (seen from +z),
+// top (from +y) and side (from +x) views (see StandardView in orbit_camera.h); N
+// writes each body's name beside it. Hovering over a body names it.
 #pragma once
 
 #include "app/gui/panels/view/frame_geometry.h"
@@ -14,6 +16,7 @@
 #include "app/gui/panels/view/scene_renderer.h"
 #include "app/gui/panels/view/view_snapshot.h"
 
+#include <QList>
 #include <QOpenGLWidget>
 #include <QPointF>
 #include <QString>
@@ -61,6 +64,22 @@ public:
     void orbitBy(double dxPx, double dyPx);
     void panBy(double dxPx, double dyPx);
     void zoomBy(double wheelSteps);
+    // A standard view (front, top, side), framing the bodies.
+    void setStandardView(StandardView v);
+
+    // The view's own actions, for the View menu: Front (1), Top (2), Side (3) view,
+    // and Body names (N, checkable). They are added to the view too, so their keys
+    // work wherever the view's window is active.
+    QList<QAction*> viewActions() const { return viewActions_; }
+
+    // Body names: always on hover; written beside every body when this is on.
+    void setBodyNamesVisible(bool on);
+    bool bodyNamesVisible() const { return bodyNamesVisible_; }
+    int hoveredBody() const { return hoveredBody_; }   // -1 when the mouse is over no body
+    // The world reference (axes at the origin, ground grid) and the axis labels of
+    // the last frame (for the tests).
+    const view::WorldReference& worldReference() const { return world_; }
+    const std::vector<view::SceneLabel>& labels() const { return labels_; }
 
     // Picking and projection in widget (logical) pixels.
     std::optional<Pick> pick(QPoint widgetPos) const;   // through the centre of that pixel
@@ -112,6 +131,7 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void leaveEvent(QEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
@@ -121,6 +141,10 @@ private:
     void releaseGl();
     void paintLegend(QPainter& painter) const;
     void paintInfo(QPainter& painter) const;
+    void paintLabels(QPainter& painter) const;
+    void createViewActions();
+    QAction* viewActionFor(const QKeyEvent* event) const;
+    void setHoveredBody(int body);
     view::FrameOptions frameOptions() const;
     void follow();
     void paintGlError(QPainter& painter) const;
@@ -147,6 +171,12 @@ private:
     bool showOmega_ = false;
     bool showL_ = false;
     int followBody_ = -1;
+    QList<QAction*> viewActions_;
+    bool bodyNamesVisible_ = false;
+    int hoveredBody_ = -1;
+    QPointF hoverPos_;
+    view::WorldReference world_;
+    std::vector<view::SceneLabel> labels_;
     bool glReady_ = false;
     QString glError_;
     QString glVersion_;

@@ -107,6 +107,11 @@ ViewSnapshot makeViewSnapshot(const World& world, const StepTrace* trace)
                     if (v == nullptr) break;
                     PendingForce& pf = pendingFor(pendingForces, e.body, e.index);
                     (is(e, q::applied_force) ? pf.f_W : pf.p_W) = *v;
+                } else if (is(e, q::applied_torque)) {
+                    // q_j, a couple: drawn at the centre of mass x.
+                    const Vec3* v = vec3Of(e);
+                    if (v == nullptr || !snap.bodies[e.body].finite) break;
+                    snap.torques.push_back(ViewSnapshot::Torque{e.body, e.index, *v});
                 } else if (is(e, q::gravity_force)) {
                     // M g acts at the centre of mass x (no torque).
                     const Vec3* v = vec3Of(e);

@@ -11,6 +11,7 @@
 //   f_W      applied force f_i (trace `applied_force`)                  [N]
 //   p_W      its application point p_i (trace `application_point`)     [m]
 //   fg_W     gravity M g at the centre of mass (trace `gravity_force`)  [N]
+//   q_W      a pure torque (couple) q_j on a body (trace `applied_torque`) [N m]
 //   v_W      velocity of a probe point (trace `point_velocity`)         [m/s]
 //   n_W      contact normal, unit, from B to A (trace `normal`)         [-]
 //   J        normal impulse magnitude (trace `impulse`)                  [N s]
@@ -64,6 +65,12 @@ struct ViewSnapshot {
         Vec3 f_W = Vec3::Zero();
         bool upcoming = false;     // acts in the next step (from the scene), else acted in the last
     };
+    // A pure torque q_j of the step just taken (a couple: it has no point), drawn at x.
+    struct Torque {
+        int body = -1;
+        int index = -1;            // the trace index j of q_j
+        Vec3 q_W = Vec3::Zero();
+    };
     struct Probe {
         int body = -1;
         int index = -1;            // probe number in the scene
@@ -95,6 +102,7 @@ struct ViewSnapshot {
     std::vector<Body> bodies;      // in the world's body order
     std::vector<Plane> planes;     // in SceneDef::planes order
     std::vector<Force> forces;     // applied forces, then gravity, in trace order
+    std::vector<Torque> torques;   // from the trace, in trace order
     std::vector<Probe> probes;
     std::vector<Contact> contacts;
     std::optional<Spring> spring;

@@ -25,6 +25,7 @@ inline Rgba bodyColour(int body, bool fixed, std::string_view name = {})
 
 inline constexpr Rgba kForce{1.00f, 0.55f, 0.05f, 1.f};      // applied force f_i (orange)
 inline constexpr Rgba kGravity{0.72f, 0.40f, 0.08f, 1.f};    // M g (dark orange)
+inline constexpr Rgba kTorque{0.00f, 0.45f, 0.40f, 1.f};    // couple q_j (dark teal)
 inline constexpr Rgba kProbe{0.00f, 0.70f, 0.80f, 1.f};      // probe point and v_p (cyan)
 inline constexpr Rgba kContact{0.85f, 0.10f, 0.75f, 1.f};    // contact point and n (magenta)
 inline constexpr Rgba kImpulse{0.95f, 0.78f, 0.00f, 1.f};    // J n (yellow)
@@ -38,6 +39,7 @@ inline constexpr Rgba kSpring{0.10f, 0.10f, 0.10f, 1.f};     // drag spring (bla
 inline constexpr Rgba kAxisX{0.90f, 0.15f, 0.15f, 1.f};
 inline constexpr Rgba kAxisY{0.10f, 0.65f, 0.15f, 1.f};
 inline constexpr Rgba kAxisZ{0.15f, 0.30f, 0.95f, 1.f};
+inline constexpr Rgba kGrid{0.68f, 0.71f, 0.76f, 1.f};      // the ground grid (light grey)
 inline constexpr Rgba kEdge{0.12f, 0.12f, 0.14f, 1.f};       // box outlines
 inline constexpr Rgba kPlane{0.55f, 0.60f, 0.66f, 0.55f};    // planes (alpha: seen from the free side)
 inline constexpr float kPlaneAlphaBehind = 0.10f;            // a wall seen from behind barely shows

@@ -214,7 +214,8 @@ void TestSceneView::rendersLesson()
 void TestSceneView::emptySceneIsBlank()
 {
     // Negative control for the "not blank" checks: a scene without bodies is only the
-    // background gradient (and the legend's little axis strokes).
+    // background gradient (and the legend's little axis strokes): the world axes and
+    // grid are drawn only in a scene with bodies.
     SceneView view;
     showView(view);
     view.setSnapshot(ViewSnapshot{});
@@ -499,6 +500,7 @@ void TestSceneView::infoOverlayAndStateArrows()
     savePng(img, "05_state_arrows");
     QVERIFY(distinctColours(img) > 300);
 }
+
 
 QTEST_MAIN(TestSceneView)
 #include "tst_scene_view.moc"

@@ -61,6 +61,7 @@ private slots:
     void cameraProjectsTargetToCentre();
     void cameraRayRoundTrip();
     void arrowScaleLongestIsOneBox();
+    void lesson5TorqueIsDrawnAtTheCentre();
 };
 
 void TestViewGeometry::lesson1ForceArrowIsTheTracesForce()
@@ -512,7 +513,9 @@ void TestViewGeometry::arrowScaleLongestIsOneBox()
     StepTrace t;
     QVERIFY(w.step(&t).ok);
     const ViewSnapshot s = makeViewSnapshot(w, &t);
-    const view::FrameGeometry g = view::buildFrameGeometry(s, {}, view::FrameOptions{});
+    view::FrameOptions noWorld;
+    noWorld.worldReference = false;   // the world axes would add three arrows to `lit`
+    const view::FrameGeometry g = view::buildFrameGeometry(s, {}, noWorld);
     QCOMPARE(g.scales.refLength, 1.0);
     RBW_COMPARE_NEAR_STRICT(g.scales.maxForce, std::sqrt(2.0), 1e-15);
     RBW_COMPARE_NEAR_STRICT(view::arrowScale(g.scales.maxForce, g.scales.refLength) * std::sqrt(2.0), 1.0, 1e-15);
@@ -525,6 +528,37 @@ void TestViewGeometry::arrowScaleLongestIsOneBox()
     for (const std::vector<view::LitVertex>* part : {&g.lit, &g.overlay}) {
         for (const view::LitVertex& v : *part) QVERIFY(std::isfinite(v.p[0]) && std::isfinite(v.p[1]) && std::isfinite(v.p[2]));
     }
+}
+
+void TestViewGeometry::lesson5TorqueIsDrawnAtTheCentre()
+{
+    // Lesson 5: the body "accelerated" (index 1, a 1 m cube at x = (1.5, 0, 0)) has
+    // the couple q_0 = (0, 0.05, 0) N m. After one step the trace's applied_torque
+    // row is drawn from x along +y, one box (1 m) long since it is the only torque.
+    World w(lessonScene("05-spinning/scene.json"));
+    StepTrace t;
+    QVERIFY(w.step(&t).ok);
+    const TraceEntry* qTrace = t.find("applied_torque", 1, 0);
+    QVERIFY(qTrace != nullptr);
+    const ViewSnapshot s = makeViewSnapshot(w, &t);
+    QCOMPARE(int(s.torques.size()), 1);
+    QVERIFY(s.torques[0].q_W == std::get<Vec3>(qTrace->value));
+    const view::FrameGeometry g = view::buildFrameGeometry(s, {}, view::FrameOptions{});
+    int torques = 0;
+    for (const view::ArrowRecord& a : g.arrows) {
+        if (a.kind != view::ArrowKind::Torque) continue;
+        ++torques;
+        QCOMPARE(a.body, 1);
+        QVERIFY(a.from_W == s.bodies[1].x_W);
+        QVERIFY(near(a.to_W - a.from_W, Vec3(0, 1, 0), 1e-12));
+        QVERIFY(a.value == Vec3(0, 0.05, 0));
+    }
+    QCOMPARE(torques, 1);
+    QVERIFY(g.scales.hasTorque);
+    RBW_COMPARE_NEAR_STRICT(g.scales.maxTorque, 0.05, 1e-15);
+    // Negative control: before the first step there is no trace and no torque arrow.
+    const ViewSnapshot before = makeViewSnapshot(World(lessonScene("05-spinning/scene.json")), nullptr);
+    QVERIFY(before.torques.empty());
 }
 
 QTEST_GUILESS_MAIN(TestViewGeometry)
