@@ -191,7 +191,7 @@ HandEulerStep handEulerStep(const BodyStepInputs& in, Mistake m, int variant)
         return inv;
     }();
     const Mat3 Iinv0 = inverseInertiaWorld(R0, setUp ? s.I0inv_B : I0inv_true, in.convention);
-    const Vec3 omega0 = Iinv0 * in.L_W;
+    const Vec3 omega0 = in.omega_W ? *in.omega_W : Vec3(Iinv0 * in.L_W);
 
     // Step 1: F = sum f_i + M g,  q = sum (p_i - x) x f_i + sum q_j
     s.F_W = M * in.g_W;

@@ -18,6 +18,7 @@
 
 #include <string_view>
 #include <utility>
+#include <optional>
 #include <vector>
 
 namespace rbw {
@@ -79,6 +80,10 @@ struct BodyStepInputs {
     std::vector<Vec3> probes_B;                  // points fixed to the body, body frame
     InertiaConvention convention = InertiaConvention::Standard;
     bool firstStep = true;                       // r is the scene's initial orientation
+    // The omega the step starts from: unset, the right I^-1(r_n) L_n (a hand step from
+    // the workbook's state); set, a simulator's own omega_n, mistake and all (the probes'
+    // replay, physics/workbook/probes/replay.cpp).
+    std::optional<Vec3> omega_W;
 };
 
 // The quantities of one hand-calculated explicit Euler step (trace ids in comments).

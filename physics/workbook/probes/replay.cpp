@@ -58,17 +58,6 @@ struct SimBody {
     bool stepped = false;
 };
 
-// The mistakes whose omega is not I^-1(r) L with the right I^-1: a simulator that makes
-// one of them turns in the next step with its own omega. handEulerStep() models one hand
-// step from the workbook's state, so it starts every step from the right omega;
-// chainedStep() gives it the simulator's. (If BodyStepInputs took the step's starting
-// omega, this list and the two extra calls below would go.)
-bool turnsWithOwnOmega(Mistake m)
-{
-    return m == Mistake::TransposedInertia || m == Mistake::BodyInverseInertia ||
-           m == Mistake::InertiaNotInverted || m == Mistake::HalfExtentsForSize;
-}
-
 // One explicit Euler step of one body as the simulator with `model` takes it.
 HandEulerStep chainedStep(const SimBody& b, double h, const ReplayModel& model)
 {
@@ -82,33 +71,9 @@ HandEulerStep chainedStep(const SimBody& b, double h, const ReplayModel& model)
     in.L_W = b.L_W;
     in.forces = b.forces;
     in.firstStep = !b.stepped;
-    HandEulerStep s = handEulerStep(in, model.mistake, model.variant);
-    if (!turnsWithOwnOmega(model.mistake)) return s;
-
-    // The turn with the simulator's omega_n: handEulerStep turns r with I^-1(r_n) L_n of
-    // the right inertia, so give it L' = I(r_n) omega_n (the right I(r_n) = R I0 R^T) and
-    // no loads; only its r_{n+1} is used.
-    const Mat3 R_n = b.r_WB.toRotationMatrix();
-    const Mat3 I_W = R_n * boxInertiaBody(b.size, b.mass) * R_n.transpose();
-    BodyStepInputs turnOnly = in;
-    turnOnly.forces.clear();
-    turnOnly.L_W = I_W * b.omega_W;
-    const Quat r_next = handEulerStep(turnOnly, model.mistake, model.variant).q_WB;
-
-    // R, I^-1 and omega of r_{n+1} with the mistake: start at r_{n+1} without spin
-    // (L = 0, so the turn is none) and let L_{n+1} = 0 + h (L_{n+1}/h) arrive as a couple.
-    BodyStepInputs at = in;
-    at.forces.clear();
-    at.q_WB = r_next;
-    at.L_W = Vec3::Zero();
-    at.couple_W = s.L_W / h;
-    at.firstStep = false;
-    const HandEulerStep t = handEulerStep(at, model.mistake, model.variant);
-    s.q_WB = t.q_WB;
-    s.R_WB = t.R_WB;
-    s.Iinv_W = t.Iinv_W;
-    s.omega_W = t.omega_W;
-    return s;
+    // The step starts from the simulator's own omega_n (a mistake in omega carries on).
+    in.omega_W = b.omega_W;
+    return handEulerStep(in, model.mistake, model.variant);
 }
 
 Answer answerOf(const Vec3& x, const Vec3& v, const Vec3& omega, const Quat& r)

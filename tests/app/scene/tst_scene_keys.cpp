@@ -48,8 +48,10 @@ const QList<OtherFormat> kOtherFormats{
       "orientation", "point", "position", "probes", "steps"}},
     {"app/output/study_csv.cpp", "the columns of the study CSVs (docs/accuracy-lab.md)", {"dt", "integrator", "steps"}},
     {"app/output/value_format.cpp", "a trace value's kind in the run output (docs/cli.md)", {"quaternion"}},
-    {"app/cli/", "rbw's options (--dt, --steps, --integrator, --trace none) and the results of `rbw check` (docs/cli.md)",
-     {"body", "dt", "integrator", "none", "steps"}},
+    {"app/cli/",
+     "rbw's options (--dt, --steps, --integrator, --trace none), the results of `rbw check` and `rbw diagnose`'s JSON "
+     "(a probe's name, the probes) (docs/cli.md, docs/simulator-protocol.md)",
+     {"body", "dt", "integrator", "name", "none", "probes", "steps"}},
     {"app/exercise/answers_file.cpp", "answers files (docs/checker.md)", {"body"}},
     {"app/exercise/exercise_spec.cpp", "exercise.json's own keys (docs/exercises.md)", {"description"}},
     {"app/derivation/", "the derivation templates' placeholders, {{mass}}, {{body}} (docs/derivation-templates.md)",
