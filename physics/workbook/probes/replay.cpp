@@ -4,6 +4,7 @@
 #include "physics/engine/scene.h"
 #include "physics/engine/world.h"
 
+#include <string>
 #include <utility>
 
 namespace rbw::probes {
@@ -140,6 +141,7 @@ Answers replayWithEngine(const Probe& probe, InertiaConvention convention)
         switch (c.kind) {
         case CommandKind::AddBody: {
             BodyDef b;
+            b.name = "body " + std::to_string(scene.bodies.size());   // validate(): a body has a name
             b.x0_W = c.a;
             b.size = c.b;
             b.mass = c.mass;
