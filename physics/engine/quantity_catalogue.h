@@ -19,6 +19,7 @@
 #include "physics/engine/trace.h"
 
 #include <span>
+#include <array>
 #include <string_view>
 
 namespace rbw {
@@ -397,9 +398,13 @@ consteval const QuantityInfo& catalogueEntry(std::string_view key)
 
 consteval bool catalogueKeysUnique()
 {
-    for (size_t i = 0; i < std::size(kQuantityCatalogue); ++i) {
-        for (size_t j = i + 1; j < std::size(kQuantityCatalogue); ++j) {
-            if (std::string_view(kQuantityCatalogue[i].key) == kQuantityCatalogue[j].key) return false;
+    // Each key measured once, then the pairs compared (mostly by length): an strlen per
+    // pair went past clang's constexpr step limit once the catalogue grew.
+    std::array<std::string_view, std::size(kQuantityCatalogue)> keys{};
+    for (size_t i = 0; i < keys.size(); ++i) keys[i] = kQuantityCatalogue[i].key;
+    for (size_t i = 0; i < keys.size(); ++i) {
+        for (size_t j = i + 1; j < keys.size(); ++j) {
+            if (keys[i] == keys[j]) return false;
         }
     }
     return true;
