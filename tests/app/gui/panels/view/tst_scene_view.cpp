@@ -9,6 +9,7 @@
 #include "app/gui/panels/view/view_style.h"
 #include "physics/engine/world.h"
 #include "tests/test_support.h"
+#include "tests/app/gui/panels/view/view_test_support.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLContext>
@@ -26,29 +27,9 @@ namespace {
 
 using rbw::test::lessonScene;   // a lesson's scene from the source tree (tests/test_support.h)
 
-// A world stepped `steps` times, and the trace of its last step.
-struct Stepped {
-    std::unique_ptr<World> world;
-    StepTrace trace;
-    ViewSnapshot snapshot() const { return makeViewSnapshot(*world, world->stepIndex() > 0 ? &trace : nullptr); }
-};
-
-Stepped stepLesson(const QString& lesson, int steps)
-{
-    Stepped s;
-    s.world = std::make_unique<World>(lessonScene(lesson + "/scene.json"));
-    for (int k = 0; k < steps; ++k) {
-        if (!s.world->step(&s.trace).ok) qFatal("lesson %s blew up at step %d", qPrintable(lesson), k);
-    }
-    return s;
-}
-
-void showView(SceneView& view, QSize size = {640, 480})
-{
-    view.resize(size);
-    view.show();
-    if (!QTest::qWaitForWindowExposed(&view)) qFatal("the view was never exposed");
-}
+using rbw::test::Stepped;
+using rbw::test::stepLesson;
+using rbw::test::showView;
 
 // How far a pixel is from being the body colour c shaded by a factor k (the lit
 // shader writes c k): the residual of px ~ k c, in 0..1 units, with k from least squares.

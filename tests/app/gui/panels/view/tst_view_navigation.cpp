@@ -7,6 +7,7 @@
 #include "app/gui/panels/view/scene_view.h"
 #include "physics/engine/world.h"
 #include "tests/test_support.h"
+#include "tests/app/gui/panels/view/view_test_support.h"
 
 #include <QAction>
 #include <QVector3D>
@@ -21,28 +22,9 @@ namespace {
 
 using rbw::test::lessonScene;
 
-struct Stepped {
-    std::unique_ptr<World> world;
-    StepTrace trace;
-    ViewSnapshot snapshot() const { return makeViewSnapshot(*world, world->stepIndex() > 0 ? &trace : nullptr); }
-};
-
-Stepped stepLesson(const QString& lesson, int steps)
-{
-    Stepped s;
-    s.world = std::make_unique<World>(lessonScene(lesson + "/scene.json"));
-    for (int k = 0; k < steps; ++k) {
-        if (!s.world->step(&s.trace).ok) qFatal("lesson %s blew up at step %d", qPrintable(lesson), k);
-    }
-    return s;
-}
-
-void showView(SceneView& view, QSize size = {640, 480})
-{
-    view.resize(size);
-    view.show();
-    if (!QTest::qWaitForWindowExposed(&view)) qFatal("the view was never exposed");
-}
+using rbw::test::Stepped;
+using rbw::test::stepLesson;
+using rbw::test::showView;
 
 QPoint pixelOf(const QPointF& p) { return QPoint(int(std::floor(p.x())), int(std::floor(p.y()))); }
 
