@@ -9,7 +9,7 @@
 // entries stay and can be scrubbed to again; recording a new step from an earlier
 // entry (push) first discards every entry after the cursor, as typing after an
 // undo discards the redo. When full (capacity() entries, or more than byteBudget()
-// bytes of packed traces and states), push drops the oldest entries: a scene with
+// bytes of packed traces and snapshots, warm-start caches included), push drops the oldest entries: a scene with
 // many bodies keeps fewer steps (fifty boxes 400), a small one all 1000, so the
 // app stays within its memory target (docs/performance.md).
 #pragma once
@@ -29,8 +29,9 @@ struct HistoryEntry {
 
     std::size_t bytes() const
     {
-        return sizeof(HistoryEntry) + trace.bytes() + state.states.capacity() * sizeof(BodyState) +
-               state.torqueEnabled.capacity();
+        // WorldSnapshot::bytes() counts everything a step carries over: body states,
+        // torque switches, and the manifold model's warm-start cache and sleep state.
+        return sizeof(HistoryEntry) + trace.bytes() + state.bytes();
     }
 };
 

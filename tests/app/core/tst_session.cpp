@@ -83,6 +83,8 @@ private slots:
     void goToStepLimits();
     void historyKeepsWithinItsByteBudget_data();
     void historyKeepsWithinItsByteBudget();
+    void historyCountsTheWarmStartCache_data();
+    void historyCountsTheWarmStartCache();
 };
 
 void TestSession::stepBackRestoresExactly_data()
@@ -514,6 +516,36 @@ void TestSession::historyKeepsWithinItsByteBudget()
     sum = 0;
     for (std::size_t i = 0; i < h.size(); ++i) sum += h.at(i).bytes();
     QCOMPARE(h.bytes(), sum);
+}
+
+// A kept state's size is its whole snapshot: in a manifold scene that includes the
+// warm-start cache and sleep state (WorldSnapshot::bytes()), so a pile with many
+// contacts keeps fewer steps rather than overrunning the budget. Lesson 11's box
+// rests on the ground after 60 steps: its contact points carry warm-start impulses,
+// so the cache holds bytes and the entry counts them (with the per-body sleep state)
+// on top of the body states. Control: the course model's lesson 4 leaves the cache
+// empty (its sleep state still has one entry per body, counted the same way).
+void TestSession::historyCountsTheWarmStartCache_data()
+{
+    QTest::addColumn<QString>("lesson");
+    QTest::addColumn<bool>("hasCache");
+    QTest::newRow("11 manifold") << "11-resting-contact/scene.json" << true;
+    QTest::newRow("04 course (control)") << "04-many-boxes/scene.json" << false;
+}
+
+void TestSession::historyCountsTheWarmStartCache()
+{
+    QFETCH(QString, lesson);
+    QFETCH(bool, hasCache);
+    Session s;
+    s.load(lessonScene(lesson));
+    for (int k = 0; k < 60; ++k) QVERIFY(s.step());
+    const HistoryEntry& e = s.history().last();
+    QCOMPARE(e.state.contacts.cache.bytes() > 0, hasCache);
+    const std::size_t cacheBytes = e.state.contacts.bytes();
+    const std::size_t bodyBytes =
+        e.state.states.capacity() * sizeof(BodyState) + e.state.torqueEnabled.capacity();
+    QCOMPARE(e.bytes(), sizeof(HistoryEntry) + e.trace.bytes() + bodyBytes + cacheBytes);
 }
 
 QTEST_GUILESS_MAIN(TestSession)
