@@ -3,6 +3,7 @@
 #include "physics/engine/scene.h"
 #include "physics/engine/manifold/settings.h"
 #include "physics/engine/integrator_registry.h"
+#include "physics/engine/scene_words.h"
 #include "physics/engine/validation_detail.h"
 #include <algorithm>
 #include <charconv>
@@ -28,7 +29,7 @@ void requireFinite(std::vector<SceneIssue>& out, const std::string& path, const 
 
 bool knownConvention(InertiaConvention c)
 {
-    return c == InertiaConvention::Standard || c == InertiaConvention::CourseTemplate;
+    return isSceneWordValue(c);
 }
 
 bool isBody(const SceneDef& scene, int b)
@@ -183,7 +184,7 @@ std::vector<SceneIssue> validate(const SceneDef& scene)
                                          "; known: " + integratorNames()});
     }
     if (!knownConvention(scene.inertiaConvention)) {
-        out.push_back({"inertia_convention", "must be \"standard\" or \"course-template\""});
+        out.push_back({"inertia_convention", "must be " + sceneWordChoices<InertiaConvention>()});
     }
     requireFinite(out, "gravity", scene.g_W);
     if (scene.bodies.empty()) {
@@ -234,7 +235,7 @@ std::vector<SceneIssue> validate(const SceneDef& scene)
         }
         const bool conventionOk = !b.inertiaConvention || knownConvention(*b.inertiaConvention);
         if (!conventionOk) {
-            out.push_back({at + ".inertia_convention", "must be \"standard\" or \"course-template\""});
+            out.push_back({at + ".inertia_convention", "must be " + sceneWordChoices<InertiaConvention>()});
         }
         if (!b.fixed && massOk && sizeOk && orientationOk && conventionOk && b.omega0_W.allFinite() &&
             knownConvention(scene.inertiaConvention)) {
@@ -308,8 +309,8 @@ std::vector<SceneIssue> validate(const SceneDef& scene)
     checkCoefficient(out, "friction", scene.friction, kNoLimit);
     checkCoefficient(out, "restitution_threshold", scene.restitutionThreshold, kNoLimit);
     checkPairs(out, scene, names);
-    if (scene.planeContacts != PlaneContactMode::PerPoint && scene.planeContacts != PlaneContactMode::Average) {
-        out.push_back({"plane_contacts", "must be \"per-point\" or \"average\""});
+    if (!isSceneWordValue(scene.planeContacts)) {
+        out.push_back({"plane_contacts", "must be " + sceneWordChoices<PlaneContactMode>()});
     }
     if (!(std::isfinite(scene.energyJumpFactor) && (scene.energyJumpFactor == 0.0 || scene.energyJumpFactor >= 1.0))) {
         out.push_back({"energy_jump.factor", "must be 0 (off) or a finite number >= 1, got " +

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace rbw {
@@ -58,6 +59,29 @@ constexpr std::optional<E> sceneWordValue(std::string_view word)
         if (words[i] == word) return static_cast<E>(i);
     }
     return std::nullopt;
+}
+
+// The words of E as a message lists them: "\"ngs\", \"baumgarte\" or \"none\"" (the
+// validation messages, "must be " + sceneWordChoices<PositionFix>()).
+template <typename E>
+std::string sceneWordChoices()
+{
+    const std::span<const std::string_view> words = sceneWords<E>();
+    std::string text;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        if (i > 0) text += i + 1 == words.size() ? " or " : ", ";
+        text += '"';
+        text += words[i];
+        text += '"';
+    }
+    return text;
+}
+
+// A value inside E's range (a scene built in code may cast any integer to E).
+template <typename E>
+constexpr bool isSceneWordValue(E value)
+{
+    return static_cast<std::size_t>(value) < sceneWords<E>().size();
 }
 
 static_assert(sceneWord(ContactModel::Manifold) == "manifold");

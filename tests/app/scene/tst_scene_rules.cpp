@@ -403,6 +403,17 @@ void TestSceneRules::codeOnlyRules_data()
                                              s.pairs.push_back(o);
                                          })
                                       << QStringList{"pairs[0].bodies[1]: names no plane of the scene (index 3; planes: none)"};
+    // An enumeration cast from an integer outside its words (a scene built in code):
+    // the message lists the words the file format spells (physics/engine/scene_words.h).
+    QTest::newRow("inertia convention out of range")
+        << SceneEdit([](SceneDef& s) { s.inertiaConvention = static_cast<rbw::InertiaConvention>(7); })
+        << QStringList{"inertia_convention: must be \"standard\" or \"course-template\""};
+    QTest::newRow("body's inertia convention out of range")
+        << SceneEdit([](SceneDef& s) { s.bodies[1].inertiaConvention = static_cast<rbw::InertiaConvention>(2); })
+        << QStringList{"bodies[1].inertia_convention: must be \"standard\" or \"course-template\""};
+    QTest::newRow("plane contacts out of range")
+        << SceneEdit([](SceneDef& s) { s.planeContacts = static_cast<rbw::PlaneContactMode>(2); })
+        << QStringList{"plane_contacts: must be \"per-point\" or \"average\""};
     QTest::newRow("no pushes") << SceneEdit([](SceneDef& s) { s.push.magnitude = -1; })   // ignored: no push body
                                << QStringList{};
     // initialState() normalises r0 by |q|: |q|^2 must neither overflow nor round to 0
