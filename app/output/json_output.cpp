@@ -1,7 +1,9 @@
 #include "app/output/json_output.h"
 
 #include "app/output/value_format.h"
+#include "physics/engine/diagnostic_catalogue.h"
 #include "physics/engine/inertia.h"
+#include "physics/engine/quantities.h"
 #include "physics/engine/scene_words.h"
 
 #include <QJsonArray>
@@ -26,6 +28,29 @@ QString conventionName(InertiaConvention c)
     return QString::fromLatin1(w.data(), static_cast<qsizetype>(w.size()));
 }
 
+QString idOf(std::string_view id)
+{
+    return QString::fromLatin1(id.data(), static_cast<qsizetype>(id.size()));
+}
+
+QString idOf(const QuantityInfo& q)
+{
+    return QString::fromLatin1(q.id);
+}
+
+// Every diagnostic of the catalogue (diagnostic_catalogue.h) under its id.
+template <typename Of, std::size_t N>
+void insertDiagnostics(QJsonObject& o, const DiagnosticInfo<Of> (&table)[N], const Of& d)
+{
+    for (const DiagnosticInfo<Of>& info : table) {
+        if (info.scalar != nullptr) {
+            o.insert(idOf(info.id), d.*info.scalar);
+        } else {
+            o.insert(idOf(info.id), jsonVec3(d.*info.vector));
+        }
+    }
+}
+
 } // namespace
 
 QJsonObject diagnosticsToJson(const Diagnostics& d, const SceneDef* scene)
@@ -33,29 +58,17 @@ QJsonObject diagnosticsToJson(const Diagnostics& d, const SceneDef* scene)
     // bodies[]: each body's own part, in scene order (named when the scene is known).
     QJsonArray bodies;
     for (int b = 0; b < static_cast<int>(d.bodies.size()); ++b) {
-        const BodyDiagnostics& db = d.bodies[b];
-        QJsonObject o{
-            {"kinetic_energy_translational", db.kineticTranslational},
-            {"kinetic_energy_rotational", db.kineticRotational},
-            {"kinetic_energy", db.kinetic},
-            {"angular_momentum", jsonVec3(db.L_W)},
-            {"angular_momentum_norm", db.L_norm},
-        };
+        QJsonObject o;
+        insertDiagnostics(o, kBodyDiagnostics, d.bodies[b]);
         if (scene != nullptr && b < static_cast<int>(scene->bodies.size())) {
             o.insert("body", bodyName(*scene, b));
         }
         bodies.append(o);
     }
-    return QJsonObject{
-        {"kinetic_energy_translational", d.kineticTranslational},
-        {"kinetic_energy_rotational", d.kineticRotational},
-        {"kinetic_energy", d.kinetic},
-        {"potential_energy", d.potential},
-        {"total_energy", d.total},
-        {"linear_momentum", jsonVec3(d.P_W)},
-        {"angular_momentum_origin", jsonVec3(d.L_O_W)},
-        {"bodies", bodies},
-    };
+    QJsonObject world;
+    insertDiagnostics(world, kWorldDiagnostics, d);
+    world.insert("bodies", bodies);
+    return world;
 }
 
 QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene)
@@ -119,13 +132,13 @@ QJsonObject traceToJson(const StepTrace& trace, const SceneDef& scene)
         const BodyState& s = trace.start.bodies[static_cast<size_t>(b)];
         startBodies.append(QJsonObject{
             {"name", bodyName(scene, b)},
-            {"position", jsonVec3(s.x_W)},
-            {"linear_velocity", jsonVec3(s.v_W)},
-            {"orientation", jsonQuat(s.q_WB)},
-            {"angular_momentum", jsonVec3(s.L_W)},
-            {"rotation_matrix", jsonMat3(s.R_WB)},
-            {"inverse_inertia_world", jsonMat3(s.Iinv_W)},
-            {"angular_velocity", jsonVec3(s.omega_W)},
+            {idOf(q::position), jsonVec3(s.x_W)},
+            {idOf(q::linear_velocity), jsonVec3(s.v_W)},
+            {idOf(q::orientation), jsonQuat(s.q_WB)},
+            {idOf(q::angular_momentum), jsonVec3(s.L_W)},
+            {idOf(q::rotation_matrix), jsonMat3(s.R_WB)},
+            {idOf(q::inverse_inertia_world), jsonMat3(s.Iinv_W)},
+            {idOf(q::angular_velocity), jsonVec3(s.omega_W)},
         });
     }
     QJsonArray startProbes;
@@ -169,13 +182,13 @@ QJsonObject runResultToJson(const World& world)
             {"fixed", scene.bodies[b].fixed},
             {"integrator", QString::fromLatin1(world.integratorOf(b).name())},
             {"inertia_convention", conventionName(world.conventionOf(b))},
-            {"position", jsonVec3(s.x_W)},
-            {"orientation", jsonQuat(s.q_WB)},
-            {"linear_velocity", jsonVec3(s.v_W)},
-            {"angular_velocity", jsonVec3(s.omega_W)},
-            {"linear_momentum", jsonVec3(linearMomentum(world.massProperties()[b], s))},
-            {"angular_momentum", jsonVec3(s.L_W)},
-            {"inverse_inertia_world", jsonMat3(s.Iinv_W)},
+            {idOf(q::position), jsonVec3(s.x_W)},
+            {idOf(q::orientation), jsonQuat(s.q_WB)},
+            {idOf(q::linear_velocity), jsonVec3(s.v_W)},
+            {idOf(q::angular_velocity), jsonVec3(s.omega_W)},
+            {idOf(diag::linear_momentum.id), jsonVec3(linearMomentum(world.massProperties()[b], s))},
+            {idOf(q::angular_momentum), jsonVec3(s.L_W)},
+            {idOf(q::inverse_inertia_world), jsonMat3(s.Iinv_W)},
         });
     }
     QJsonArray probes;

@@ -8,6 +8,7 @@
 #include <QTemporaryDir>
 #include "tests/test_support.h"
 
+#include <QSet>
 #include <QtTest>
 
 namespace {
@@ -179,12 +180,32 @@ void TestCli::csv()
     QCOMPARE(lines.size(), 1 + 1 + 3);   // header, initial state, one row per step
     const QStringList header = lines[0].split(',');
     QCOMPARE(header.first(), QString("step"));
-    QVERIFY(header.contains("box.omega_y"));
+    QVERIFY(header.contains("box.angular_velocity_y"));
     QVERIFY(header.contains("total_energy"));
+    // One naming scheme (issue 18): a body's column is BODY.ID_AXIS with ID a trace id
+    // of `rbw quantities`, and every other column a diagnostic of the JSON output.
+    QSet<QString> traceIds;
+    const Run quantities = runRbw({"quantities", "--format", "json"});
+    QCOMPARE(quantities.exitCode, 0);
+    for (const QJsonValue& v : QJsonDocument::fromJson(quantities.out).array()) traceIds << v.toObject().value("id").toString();
+    const Run json = runRbw({"run", kLesson1, "--steps", "1"});
+    QCOMPARE(json.exitCode, 0);
+    const QJsonObject diagnostics = QJsonDocument::fromJson(json.out).object().value("diagnostics").toObject();
+    QVERIFY(!traceIds.isEmpty() && !diagnostics.isEmpty());
+    for (const QString& column : header.mid(2)) {
+        if (column.startsWith("box.")) {
+            const QString id = column.mid(4).section('_', 0, -2);
+            QVERIFY2(traceIds.contains(id), qPrintable(column));
+        } else {
+            QVERIFY2(diagnostics.contains(column), qPrintable(column));
+        }
+    }
+    // Negative control: the old column name is no trace id.
+    QVERIFY(!traceIds.contains("omega"));
     const QStringList afterOne = lines[2].split(',');
     QCOMPARE(afterOne.size(), header.size());
     // After one step of h = 0.5 with F = (1,1,0), M = 2: v = h F/M = (0.25, 0.25, 0).
-    QCOMPARE(afterOne[header.indexOf("box.v_x")].toDouble(), 0.25);
+    QCOMPARE(afterOne[header.indexOf("box.linear_velocity_x")].toDouble(), 0.25);
     QCOMPARE(afterOne[header.indexOf("time")].toDouble(), 0.5);
 }
 
