@@ -4,6 +4,7 @@
 #include "physics/workbook/checker/follow_through.h"
 #include "physics/workbook/checker/tolerance.h"
 #include "physics/engine/quantities.h"
+#include "physics/engine/world.h"
 
 namespace rbw {
 
@@ -67,9 +68,21 @@ std::string followsText(const std::vector<AnswerKey>& from)
            " and this one follows.";
 }
 
-std::string wrongText(const AnswerResult& r)
+// The explanation of a named mistake for the answer's body (its inertia convention).
+std::string explanationOf(const char* id, const World& w, const Answer& a)
 {
-    if (!r.mistakes.empty()) return findMistake(r.mistakes.front())->explanation;
+    const InertiaConvention c = a.contact < 0 && a.body >= 0 ? w.conventionOf(a.body) : InertiaConvention::Standard;
+    return mistakeExplanation(*findMistake(id), c);
+}
+
+std::string wrongText(const AnswerResult& r, const World& w, const Answer& a)
+{
+    if (r.mistakes.size() > 1) {
+        std::string s = "Two mistakes together give this number (no one of them alone does):";
+        for (const char* id : r.mistakes) s += std::string(" ") + id + ": " + explanationOf(id, w, a);
+        return s;
+    }
+    if (!r.mistakes.empty()) return explanationOf(r.mistakes.front(), w, a);
     if (r.possibleMistakes.size() > 1) {
         std::vector<std::string> ids;
         for (const PossibleMistake& p : r.possibleMistakes) ids.push_back(p.id);
@@ -77,7 +90,7 @@ std::string wrongText(const AnswerResult& r)
     }
     if (r.possibleMistakes.size() == 1) {
         const PossibleMistake& p = r.possibleMistakes.front();
-        return std::string("It may be ") + p.id + ", but " + p.reason + ": " + findMistake(p.id)->explanation;
+        return std::string("It may be ") + p.id + ", but " + p.reason + ": " + explanationOf(p.id, w, a);
     }
     return "This is not the workbook's number, and none of the common mistakes gives it.";
 }
@@ -155,7 +168,7 @@ std::vector<AnswerResult> checkAnswers(const World& before, const StepTrace& tra
         checking::Diagnosis d = checking::diagnose(before, trace, answers, verdicts, i, relTol);
         out[i].mistakes = std::move(d.mistakes);
         out[i].possibleMistakes = std::move(d.possible);
-        out[i].explanation = wrongText(out[i]);
+        out[i].explanation = wrongText(out[i], before, answers[i]);
     }
     return out;
 }

@@ -2,10 +2,12 @@
 // inputs the way a student who makes that mistake would, so that a checker can name
 // the mistake a wrong number shows. They model hand calculations of the course's
 // algorithms: one explicit Euler step in the TUM order (docs/references.md §1) and
-// one contact impulse (§3). Every model is one small function with its equation;
-// handEulerStep() and handImpulse() run the whole hand calculation with one mistake
+// one contact impulse (§3). Every model is one small function with its equation
+// (mistakes.cpp; the catalogue in mistake_catalogue.cpp); handEulerStep() and
+// handImpulse() run the whole hand calculation with one mistake, or two (MistakeSet),
 // switched on, so a model also gives every later quantity the mistake carries into
-// (a wrong I^-1 gives a wrong omega).
+// (a wrong I^-1 gives a wrong omega). The models of what a simulator keeps between
+// steps (MistakeInfo::oneStep false) read it from BodyStepInputs' simulator fields.
 //
 // Glossary: as physics/engine/body.h and physics/engine/course/impulse.h. The step's inputs are
 // the values at its start (x, v, r, L of the body, its forces f_i at p_i), h and the
@@ -16,6 +18,7 @@
 #include "physics/engine/collision/contact.h"
 #include "physics/engine/trace.h"
 
+#include <string>
 #include <string_view>
 #include <utility>
 #include <optional>
@@ -51,6 +54,24 @@ enum class Mistake {
     NoSeparatingCheck,            // J applied although v_rel.n > 0
     ImpulseLeverArmFromOrigin,    // x_a = p, x_b = p in the impulse
     ImpulseDenominatorMissingCross, // (I^-1 (x_a x n)) . n in the denominator
+    InertiaFromOldOrientation,    // omega' = R_n I0^-1 R_n^T L'
+    InertiaNotUpdated,            // I^-1 = R_0 I0^-1 R_0^T from the first step, never again (simulator only)
+    InertiaAccumulatedRotation,   // I^-1 <- R I^-1 R^T of last step's tensor (simulator only)
+    QuaternionRightMultiplied,    // r <- r + h/2 r (0, omega)
+    ForcesNotCleared,             // F, q keep acting in every later step (simulator only)
+    GravityAlwaysOn,              // v <- v + h (F/M + g), g = (0, -9.81, 0) unasked (simulator only)
+    OrientationZeroQuaternion,    // r never set stays (0, 0, 0, 0), R(0) = E (simulator only)
+    AngleInDegrees,               // initial r = (cos th'/2, n sin th'/2), th' = th in degrees read as radians
+    ImpulseBodyInverseInertia,    // the impulse's angular terms with I0^-1
+};
+
+// One mistake, or two at once (mistakes combine, issue 21 item 1: the checker considers
+// pairs). `variant` is that of whichever of the two has variants.
+struct MistakeSet {
+    Mistake first = Mistake::None;
+    Mistake second = Mistake::None;
+    int variant = 0;
+    bool has(Mistake m) const { return m != Mistake::None && (first == m || second == m); }
 };
 
 struct MistakeInfo {
@@ -59,11 +80,18 @@ struct MistakeInfo {
     const char* equation;      // the wrong equation, plain text
     const char* explanation;   // one sentence: what went wrong and the right equation
     int variants = 1;          // ways the mistake can be made (which two axes are swapped)
+    // false: only a simulator shows it, over several steps (what it stores between steps);
+    // one step checked from the workbook's state cannot, so the checker never names it.
+    bool oneStep = true;
 };
 
 // Every model, in the order of the enum (without None).
 const std::vector<MistakeInfo>& mistakeCatalogue();
 const MistakeInfo* findMistake(std::string_view id);
+// The explanation for a body in `convention`: for transposed-inertia in the course
+// template's convention (lesson 8) the formula used is the standard one, and the right
+// one is R^T I0^-1 R.
+std::string mistakeExplanation(const MistakeInfo& m, InertiaConvention convention);
 
 // One body at the start of an explicit Euler step, and what acts on it.
 struct BodyStepInputs {
@@ -84,6 +112,12 @@ struct BodyStepInputs {
     // the workbook's state); set, a simulator's own omega_n, mistake and all (the probes'
     // replay, physics/workbook/probes/replay.cpp).
     std::optional<Vec3> omega_W;
+    // What a simulator stores between steps (the probes' replay; a one-step check from the
+    // workbook's state leaves these as they are):
+    std::optional<Mat3> IinvStored_W;            // its world I^-1 of the last step (unset: R_n I0^-1 R_n^T)
+    Vec3 keptF_W = Vec3::Zero();                 // loads of earlier steps it never cleared
+    Vec3 keptq_W = Vec3::Zero();
+    bool orientationSet = true;                  // false: set_orientation never came for this body
 };
 
 // The quantities of one hand-calculated explicit Euler step (trace ids in comments).
@@ -96,6 +130,7 @@ struct HandEulerStep {
     Mat3 R_WB, Iinv_W;           // rotation_matrix, inverse_inertia_world (after)
     Vec3 omega_W;                // angular_velocity (after)
     std::vector<Vec3> probe_W, probeVelocity_W;   // probe_position, point_velocity (after)
+    Vec3 loadsF_W, loadsq_W;     // this step's loads without gravity (what a simulator keeps)
 
     // The value of a trace id (index: the probe), or nullopt-like false.
     bool value(std::string_view id, int index, TraceValue& out) const;
@@ -103,7 +138,11 @@ struct HandEulerStep {
 
 // The explicit Euler step of the TUM algorithm by hand, with `m` (None: correct) in its
 // `variant` (0 .. MistakeInfo::variants - 1).
-HandEulerStep handEulerStep(const BodyStepInputs& in, Mistake m = Mistake::None, int variant = 0);
+HandEulerStep handEulerStep(const BodyStepInputs& in, const MistakeSet& ms);
+inline HandEulerStep handEulerStep(const BodyStepInputs& in, Mistake m = Mistake::None, int variant = 0)
+{
+    return handEulerStep(in, MistakeSet{m, Mistake::None, variant});
+}
 
 // One contact impulse at its start: the two sides (B may be a plane: invM = 0, Iinv = 0).
 struct ContactInputs {
@@ -115,6 +154,7 @@ struct ContactInputs {
     Vec3 x_B = Vec3::Zero(), v_B = Vec3::Zero(), omega_B = Vec3::Zero();
     Mat3 Iinv_B = Mat3::Zero();
     double invM_B = 0.0;
+    Mat3 I0inv_A = Mat3::Zero(), I0inv_B = Mat3::Zero();   // body frame (impulse-body-inverse-inertia)
 };
 
 struct HandImpulse {
@@ -132,6 +172,10 @@ struct HandImpulse {
 };
 
 // The normal impulse of the slides by hand (no friction), with `m` (None: correct).
-HandImpulse handImpulse(const ContactInputs& in, Mistake m = Mistake::None);
+HandImpulse handImpulse(const ContactInputs& in, const MistakeSet& ms);
+inline HandImpulse handImpulse(const ContactInputs& in, Mistake m = Mistake::None)
+{
+    return handImpulse(in, MistakeSet{m, Mistake::None, 0});
+}
 
 } // namespace rbw

@@ -47,6 +47,13 @@ Mat3 contactInverseInertia(const World& w, const StepTrace& t, int b)
     return e != nullptr ? matOf(traceValueComponents(e->value)) : Mat3(Mat3::Zero());
 }
 
+// Its body-frame I0^-1 where it turns in the contact (impulse-body-inverse-inertia), else zero.
+Mat3 contactBodyInverseInertia(const World& w, int b)
+{
+    if (w.massProperties()[b].invM == 0.0 || !w.scene().bodies[b].angularResponse) return Mat3::Zero();
+    return w.massProperties()[b].I0inv_B;
+}
+
 } // namespace
 
 ContactInputs contactStepInputs(const World& w, const StepTrace& t, int k)
@@ -67,10 +74,12 @@ ContactInputs contactStepInputs(const World& w, const StepTrace& t, int k)
     in.v_A = vecOr0(get(q::velocity_a));
     in.invM_A = w.massProperties()[h.bodyA].invM;
     in.Iinv_A = contactInverseInertia(w, t, h.bodyA);
+    in.I0inv_A = contactBodyInverseInertia(w, h.bodyA);
     if (h.bodyB >= 0) {
         in.x_B = in.g.p_W - vecOr0(get(q::x_b));
         in.invM_B = w.massProperties()[h.bodyB].invM;
         in.Iinv_B = contactInverseInertia(w, t, h.bodyB);
+        in.I0inv_B = contactBodyInverseInertia(w, h.bodyB);
     } else {
         in.x_B = in.g.p_W;
     }

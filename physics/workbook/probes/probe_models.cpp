@@ -21,6 +21,15 @@ const std::vector<ScopedMistake>& mistakeScopes()
         {M::InertiaAxesSwapped, S::Motion, "omega of a box with three different moments"},
         {M::InertiaHalfExtentsWithoutThird, S::Motion, "omega (three times the right I0)"},
         {M::OmegaAccumulated, S::Motion, "omega of a body that already turns"},
+        {M::InertiaFromOldOrientation, S::Motion, "omega of a body that turns during the step"},
+        {M::InertiaNotUpdated, S::Motion, "omega from the second step on, of a body that turns"},
+        {M::InertiaAccumulatedRotation, S::Motion, "omega of a turned body (its turns pile up in I^-1)"},
+        {M::QuaternionRightMultiplied, S::Motion, "r, then omega, of a turned body that spins about a tilted axis"},
+        {M::ForcesNotCleared, S::Motion, "v and omega in the steps after a force stops"},
+        {M::GravityAlwaysOn, S::Motion, "v (the probes have no gravity)"},
+        {M::OrientationZeroQuaternion, S::Motion, "omega of a spinning body whose orientation is never set"},
+        {M::AngleInDegrees, S::HandOnly,
+         "the initial r built from an angle by hand; the protocol sends r itself (set_orientation)"},
         {M::PointVelocityWithoutRotation, S::HandOnly,
          "a point's velocity v_p is written down only by hand; a simulator without contacts never "
          "forms it, and one with contacts is the collision group's impulse"},
@@ -35,6 +44,7 @@ const std::vector<ScopedMistake>& mistakeScopes()
         {M::NoSeparatingCheck, S::Collision, "an impulse on a separating contact"},
         {M::ImpulseLeverArmFromOrigin, S::Collision, "the impulse of a contact off the origin"},
         {M::ImpulseDenominatorMissingCross, S::Collision, "the impulse of an off-centre contact"},
+        {M::ImpulseBodyInverseInertia, S::Collision, "the impulse of a turned body"},
     };
     return all;
 }

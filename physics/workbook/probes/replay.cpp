@@ -3,6 +3,7 @@
 #include "physics/engine/inertia.h"
 #include "physics/engine/scene.h"
 #include "physics/engine/world.h"
+#include "physics/workbook/probes/simulator_state.h"
 
 #include <string>
 #include <utility>
@@ -57,6 +58,8 @@ struct SimBody {
     Vec3 omega_W = Vec3::Zero();                  // the simulator's own omega, with its mistake
     std::vector<std::pair<Vec3, Vec3>> forces;    // (p, f) for the next step
     bool stepped = false;
+    // What a simulator keeps between steps (the several-step models of simulatorState()).
+    SimulatorState kept;
 };
 
 // One explicit Euler step of one body as the simulator with `model` takes it.
@@ -74,6 +77,7 @@ HandEulerStep chainedStep(const SimBody& b, double h, const ReplayModel& model)
     in.firstStep = !b.stepped;
     // The step starts from the simulator's own omega_n (a mistake in omega carries on).
     in.omega_W = b.omega_W;
+    enterState(b.kept, in);
     return handEulerStep(in, model.mistake, model.variant);
 }
 
@@ -95,11 +99,14 @@ Answers replay(const Probe& probe, const ReplayModel& model)
             b.x_W = c.a;
             b.size = c.b;
             b.mass = c.mass;
+            b.kept = newBodyState(b.size, b.mass, model);
+            b.r_WB = b.kept.r0_WB;
             bodies.push_back(b);
             break;
         }
         case CommandKind::SetOrientation:
             bodies[c.body].r_WB = c.q.normalized();   // the protocol's r = q/|q|; omega untouched
+            bodies[c.body].kept.orientationSet = true;
             break;
         case CommandKind::SetVelocity:
             bodies[c.body].v_W = c.a;
@@ -115,6 +122,7 @@ Answers replay(const Probe& probe, const ReplayModel& model)
                 b.r_WB = s.q_WB;
                 b.L_W = s.L_W;
                 b.omega_W = s.omega_W;
+                keepState(s, b.kept);
                 b.forces.clear();   // the loads act for one step
                 b.stepped = true;
             }

@@ -112,7 +112,14 @@ private slots:
         // the first number that leaves the right algorithm, with both values
         const QJsonObject f = d.value("first_divergence").toObject();
         QVERIFY(f.value("probe").toInt() >= 1);
-        QVERIFY(f.value("step").toInt() >= 1);   // every probe's answers before a step are right
+        // every probe's answers before a step are right, but for a body whose orientation is
+        // never set: orientation-zero-quaternion prints r = (0, 0, 0, 0) from add_body on
+        if (id == "orientation-zero-quaternion") {
+            QCOMPARE(f.value("step").toInt(), 0);
+            QCOMPARE(f.value("quantity").toString(), QStringLiteral("r"));
+        } else {
+            QVERIFY(f.value("step").toInt() >= 1);
+        }
         QVERIFY(QStringList({"x", "v", "omega", "r"}).contains(f.value("quantity").toString()));
         const QJsonArray e = f.value("expected").toArray(), g = f.value("given").toArray();
         QCOMPARE(e.size(), g.size());

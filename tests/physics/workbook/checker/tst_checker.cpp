@@ -115,6 +115,29 @@ private slots:
         QCOMPARE(rbw::checkAnswers(*s.before, s.trace, {wrongIinv, other})[1].verdict, Verdict::Wrong);
     }
 
+    // Lesson 8's template box (issue 21 item 5): I^-1 written with the standard R I0^-1 R^T
+    // for the body in the course template's convention (which needs R^T I0^-1 R) is the
+    // convention mix-up, and the explanation gives the formula that body needs, not the
+    // one the student used. Negative control: the same matrix is right for the standard box.
+    void templateBoxWithStandardFormula()
+    {
+        StepUnderTest s = stepOf("08-conventions/scene.json", 0);
+        const rbw::Mat3 R = std::get<rbw::Mat3>(s.trace.find(rbw::q::rotation_matrix.id, 1)->value);
+        const rbw::Mat3 I0inv = std::get<rbw::Mat3>(s.trace.find(rbw::q::inverse_inertia_body.id, 1)->value);
+        rbw::TraceValue standard = rbw::Mat3(R * I0inv * R.transpose());
+        const rbw::AnswerResult r =
+            rbw::checkAnswers(*s.before, s.trace, {answer("inverse_inertia_world", 1, flat(standard))}).front();
+        QCOMPARE(r.verdict, Verdict::Wrong);
+        QVERIFY2(has(r, "transposed-inertia"), r.explanation.c_str());
+        const QString text = QString::fromStdString(r.explanation);
+        QVERIFY2(text.contains("course template's convention") && text.contains("needs I^-1 = R^T I0^-1 R"),
+                 qPrintable(text));
+        QVERIFY2(!text.contains("needs I^-1 = R I0^-1 R^T"), qPrintable(text));
+        const rbw::AnswerResult std0 =
+            rbw::checkAnswers(*s.before, s.trace, {answer("inverse_inertia_world", 0, flat(standard))}).front();
+        QCOMPARE(std0.verdict, Verdict::Correct);
+    }
+
     // Lesson 3, step 2 (the contact): v_rel reversed, (-2, 0, 0), and the J it gives,
     // -(1 + 1)(+2)/(27/16) = -64/27: the J follows from the wrong v_rel. J = 8/3 is the
     // linear-only impulse, J = 32/27 the one without "1 +".

@@ -160,6 +160,76 @@ private slots:
                                      [](const rbw::PossibleMistake& p) { return std::string(p.id) == "missing-time-step"; });
         QVERIFY2(it->reason.find("does not give your angular_momentum") != std::string::npos, it->reason.c_str());
     }
+
+    // Two mistakes at once (issue 21 item 1): the torque reversed and omega made with I0^-1.
+    // q = f x (p - x) = (0.25, -0.25, 0.2), L' = h q = (0.5, -0.5, 0.4), omega' = I0^-1 L' =
+    // (9.836066 * 0.5, 4.8 * -0.5, 4.411765 * 0.4) = (4.918033, -2.4, 1.764706): no single model
+    // gives it (torque-reversed alone gives -(-2.4, 4.918033, -1.764706), body-inverse-inertia
+    // alone kBodyFrameOmega). With the right I0 and r written the pairs of torque-reversed with
+    // quaternion-without-half-angle or inertia-axes-swapped (which give the same omega) are
+    // contradicted, and the pair is named with confidence; without them it is possible only.
+    void pairOfMistakes_data()
+    {
+        QTest::addColumn<bool>("withI0AndR");
+        QTest::newRow("after the right I0 and r") << true;
+        QTest::newRow("without them") << false;
+    }
+    void pairOfMistakes()
+    {
+        QFETCH(bool, withI0AndR);
+        StepUnderTest s = stepOf("01-one-step/scene.json", 0);
+        std::vector<rbw::Answer> answers = {answer("torque", 0, {0.25, -0.25, 0.2}),
+                                            answer("angular_momentum", 0, {0.5, -0.5, 0.4})};
+        if (withI0AndR) {
+            answers.push_back(answer("inertia_body", 0, {0.1017, 0, 0, 0, 0.2083, 0, 0, 0, 0.2267}));
+            answers.push_back(answer("orientation", 0, {0.7071, 0, 0, 0.7071}));
+        }
+        answers.push_back(answer("angular_velocity", 0, {4.918033, -2.4, 1.764706}));
+        const std::vector<rbw::AnswerResult> r = rbw::checkAnswers(*s.before, s.trace, answers);
+        QVERIFY(has(r[0], "torque-reversed"));
+        QCOMPARE(r[1].verdict, Verdict::FollowsFromEarlier);
+        const rbw::AnswerResult& omega = r.back();
+        QCOMPARE(omega.verdict, Verdict::Wrong);
+        if (withI0AndR) {
+            QCOMPARE(omega.mistakes.size(), size_t(2));
+            QVERIFY(has(omega, "torque-reversed") && has(omega, "body-inverse-inertia"));
+            QVERIFY(omega.possibleMistakes.empty());
+            QVERIFY2(QString::fromStdString(omega.explanation).startsWith("Two mistakes together give this number"),
+                     omega.explanation.c_str());
+        } else {
+            QVERIFY(omega.mistakes.empty());
+            for (const char* id : {"torque-reversed", "body-inverse-inertia", "quaternion-without-half-angle"}) {
+                QVERIFY2(mayBe(omega, id), id);
+            }
+            const auto bii = std::find_if(omega.possibleMistakes.begin(), omega.possibleMistakes.end(),
+                                          [](const rbw::PossibleMistake& p) { return std::string(p.id) == "body-inverse-inertia"; });
+            QVERIFY2(bii->reason.find("only together with torque-reversed") != std::string::npos, bii->reason.c_str());
+        }
+        // Negative control: the right omega after the same wrong torque is no pair's business.
+        answers.back() = answer("angular_velocity", 0, {-2.4, 4.918, -1.765});
+        const rbw::AnswerResult right = rbw::checkAnswers(*s.before, s.trace, answers).back();
+        QVERIFY(right.mistakes.empty() && right.possibleMistakes.empty());
+    }
+
+    // The models only a simulator shows over several steps (MistakeInfo::oneStep false) are
+    // never named by a one-step check, even where their number is the answer: Table 2.1's
+    // v' with gravity (the scene has none), h (f/M + g) = (1, 1 - 19.62, 0) = (1, -18.62, 0).
+    void severalStepModelsAreNotNamed()
+    {
+        StepUnderTest s = stepOf("01-one-step/scene.json", 0);
+        const rbw::AnswerResult r =
+            rbw::checkAnswers(*s.before, s.trace, {answer("linear_velocity", 0, {1, -18.62, 0})}).front();
+        QCOMPARE(r.verdict, Verdict::Wrong);
+        QVERIFY(!has(r, "gravity-always-on") && !mayBe(r, "gravity-always-on"));
+        QVERIFY(r.mistakes.empty() && r.possibleMistakes.empty());
+        // Negative control: the model does give that number.
+        rbw::BodyStepInputs in;
+        in.h = 2.0;
+        in.mass = 2.0;
+        in.forces = {{Vec3(0.3, 0.5, 0.25), Vec3(1, 1, 0)}};
+        const Vec3 v = rbw::handEulerStep(in, rbw::Mistake::GravityAlwaysOn).v_W;
+        QVERIFY((v - Vec3(1, -18.62, 0)).norm() < 1e-12);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestDiagnosis)

@@ -56,6 +56,9 @@ rbw::ContactInputs lesson3()
     c.v_B = Vec3(-1, 0, 0);
     c.Iinv_B = 6.0 * rbw::Mat3::Identity();
     c.invM_B = 1.0;
+    // body-frame inverses that differ from I^-1 (impulse-body-inverse-inertia)
+    c.I0inv_A = Vec3(1, 2, 3).asDiagonal();
+    c.I0inv_B = Vec3(1, 1, 1).asDiagonal();
     return c;
 }
 
@@ -71,6 +74,23 @@ QList<double> impulseValue(const rbw::HandImpulse& s, const char* id)
     rbw::TraceValue v;
     if (!s.value(id, v)) qFatal("no %s in the hand impulse", id);
     return rbw::test::flatten(v);
+}
+
+// Table 2.1's box spinning about x: r = 1, omega0 = (10, 0, 0) (L = I0_xx omega0 =
+// (1.016667, 0, 0)), a couple (0, 1, 0), no force, h = 0.1. By hand:
+//   L' = (1.016667, 0.1, 0);  r' = normalise((1, 0, 0, 0) + 0.05 (0, 10, 0, 0)) = (1, 0.5, 0, 0)/sqrt(1.25)
+//      = (0.894427, 0.447214, 0, 0): a turn by th = 2 atan(0.5) about x, cos th = 0.6, sin th = 0.8
+//   with a, b, c = 9.836066, 4.8, 4.411765 (I0^-1): I^-1 L' = R D R^T L' = (a L_x,
+//      0.1 (b cos^2 + c sin^2), 0.1 (b - c) sin cos) = (10, 0.455153, 0.018635)
+rbw::BodyStepInputs spinningAboutX()
+{
+    rbw::BodyStepInputs in = table21();
+    in.q_WB = Quat::Identity();
+    in.forces.clear();
+    in.couple_W = Vec3(0, 1, 0);
+    in.h = 0.1;
+    in.L_W = Vec3(0.61 / 6.0 * 10.0, 0, 0);
+    return in;
 }
 
 } // namespace
@@ -168,6 +188,75 @@ private slots:
                                                                   << QList<double>{-0.8, 1.639344, -0.588235};
     }
 
+    // The models of issue 21 item 1 a one-step check can show, on spinningAboutX() and Table 2.1.
+    void moreEulerMistakes_data()
+    {
+        QTest::addColumn<Mistake>("mistake");
+        QTest::addColumn<bool>("spinning");   // spinningAboutX(), else table21()
+        QTest::addColumn<QString>("id");
+        QTest::addColumn<QList<double>>("expected");
+        QTest::addColumn<QList<double>>("right");
+        // R_n = E: I^-1 = I0^-1, omega' = (a L_x, b 0.1, 0) = (10, 0.48, 0); the right
+        // R D R^T = [[a, 0, 0], [0, b cos^2 + c sin^2, (b - c) sin cos], [0, ., b sin^2 + c cos^2]]
+        //         = [[9.836066, 0, 0], [0, 4.551529, 0.186353], [0, 0.186353, 4.660235]]
+        QTest::newRow("inertia-from-old-orientation omega") << Mistake::InertiaFromOldOrientation << true
+                                                            << "angular_velocity" << QList<double>{10, 0.48, 0}
+                                                            << QList<double>{10, 0.455153, 0.018635};
+        QTest::newRow("inertia-from-old-orientation I^-1")
+            << Mistake::InertiaFromOldOrientation << true << "inverse_inertia_world"
+            << QList<double>{9.836066, 0, 0, 0, 4.8, 0, 0, 0, 4.411765}
+            << QList<double>{9.836066, 0, 0, 0, 4.551529, 0.186353, 0, 0.186353, 4.660235};
+        // Table 2.1 without the h: r0 = 90 deg about z, th' = 90 rad, th'/2 = 45 rad:
+        // (cos 45, 0, 0, sin 45) = (0.525322, 0, 0, 0.850904); omega0 = 0, so r' = r0'
+        QTest::newRow("angle-in-degrees r") << Mistake::AngleInDegrees << false << "orientation"
+                                            << QList<double>{0.525322, 0, 0, 0.850904}
+                                            << QList<double>{std::sqrt(0.5), 0, 0, std::sqrt(0.5)};
+    }
+
+    void moreEulerMistakes()
+    {
+        QFETCH(Mistake, mistake);
+        QFETCH(bool, spinning);
+        QFETCH(QString, id);
+        QFETCH(QList<double>, expected);
+        QFETCH(QList<double>, right);
+        const rbw::BodyStepInputs in = spinning ? spinningAboutX() : table21();
+        const QString m = rbw::test::mismatch(handValue(rbw::handEulerStep(in, mistake), qPrintable(id)), expected, 2e-6);
+        QVERIFY2(m.isEmpty(), qPrintable(m));
+        // Negative control: the right step gives the right number, which is another one.
+        const QString r = rbw::test::mismatch(handValue(rbw::handEulerStep(in), qPrintable(id)), right, 2e-6);
+        QVERIFY2(r.isEmpty(), qPrintable(r));
+        QVERIFY(!rbw::test::mismatch(right, expected, 1e-3).isEmpty());
+    }
+
+    // quaternion-right-multiplied needs r != 1 (r (0, w) = (0, w) r when r = 1): r = Rz(90) =
+    // s (1, 0, 0, 1), s = sqrt(1/2), omega0 = (1, 0, 0) (L = (I0_yy, 0, 0): Rz(90) puts the
+    // body's y along the world's x), h = 0.1, no load. With w = (1, 0, 0), v = (0, 0, s):
+    //   (0, w) r = (-w.v, s w + w x v) = (0, s, -s, 0);  r (0, w) = (-v.w, s w + v x w) = (0, s, s, 0)
+    //   right r' = normalise(s (1, 0.05, -0.05, 1)) = (1, 0.05, -0.05, 1)/sqrt(2.005)
+    //          = (0.706225, 0.035311, -0.035311, 0.706225);  the model's (0.706225, 0.035311, 0.035311, 0.706225)
+    void quaternionRightMultiplied()
+    {
+        rbw::BodyStepInputs in = table21();
+        in.forces.clear();
+        in.h = 0.1;
+        in.L_W = Vec3(1.25 / 6.0, 0, 0);
+        const QString wrong =
+            rbw::test::mismatch(handValue(rbw::handEulerStep(in, Mistake::QuaternionRightMultiplied), "orientation"),
+                                {0.706225, 0.035311, 0.035311, 0.706225}, 2e-6);
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong));
+        const QString right = rbw::test::mismatch(handValue(rbw::handEulerStep(in), "orientation"),
+                                                  {0.706225, 0.035311, -0.035311, 0.706225}, 2e-6);
+        QVERIFY2(right.isEmpty(), qPrintable(right));
+        // Negative control: at r = 1 the two products agree (the model is the right step).
+        in.q_WB = Quat::Identity();
+        in.L_W = Vec3(0.61 / 6.0, 0, 0);
+        const QList<double> atOne = handValue(rbw::handEulerStep(in), "orientation");
+        QVERIFY(rbw::test::mismatch(handValue(rbw::handEulerStep(in, Mistake::QuaternionRightMultiplied), "orientation"),
+                                    atOne, 1e-12)
+                    .isEmpty());
+    }
+
     // inertia-axes-swapped has three variants: the pair of axes exchanged.
     void inertiaAxesSwappedVariants_data()
     {
@@ -207,16 +296,17 @@ private slots:
         QVERIFY2(right.isEmpty(), qPrintable(right));
     }
 
-    // The set-up mistakes of quaternion-without-half-angle belong to the initial
-    // orientation: at a later step (firstStep false) the model is the right step.
-    void quaternionWithoutHalfAngleOnlyAtTheStart()
+    // The set-up mistakes of quaternion-without-half-angle and angle-in-degrees belong to
+    // the initial orientation: at a later step (firstStep false) the model is the right step.
+    void initialOrientationMistakesOnlyAtTheStart()
     {
         rbw::BodyStepInputs in = table21();
         in.firstStep = false;
-        const QString m = rbw::test::mismatch(
-            handValue(rbw::handEulerStep(in, Mistake::QuaternionWithoutHalfAngle), "orientation"),
-            {std::sqrt(0.5), 0, 0, std::sqrt(0.5)}, 1e-12);
-        QVERIFY2(m.isEmpty(), qPrintable(m));
+        for (Mistake m : {Mistake::QuaternionWithoutHalfAngle, Mistake::AngleInDegrees}) {
+            const QString s = rbw::test::mismatch(handValue(rbw::handEulerStep(in, m), "orientation"),
+                                                  {std::sqrt(0.5), 0, 0, std::sqrt(0.5)}, 1e-12);
+            QVERIFY2(s.isEmpty(), qPrintable(s));
+        }
     }
 
     void eulerMistake()
@@ -328,6 +418,13 @@ private slots:
                                                              << QList<double>{8.0 / 3.0};
         QTest::newRow("impulse-linear-only rotational_a") << Mistake::ImpulseLinearOnly << "rotational_a"
                                                           << QList<double>{0.1875};
+        // I0_A^-1 = diag(1, 2, 3) for I_A^-1 = 3/4 E: x_a = (0.99, 0.5, 0), x_a x n = (0, 0, 0.5),
+        // I0^-1 (x_a x n) = (0, 0, 1.5), x x_a = (-0.75, 1.485, 0), . n = 0.75 (right: 0.1875);
+        // B's lever arm is along n (0 either way): denominator 2.25, J = 4 / 2.25 = 16/9
+        QTest::newRow("impulse-body-inverse-inertia rotational_a") << Mistake::ImpulseBodyInverseInertia
+                                                                   << "rotational_a" << QList<double>{0.75};
+        QTest::newRow("impulse-body-inverse-inertia J") << Mistake::ImpulseBodyInverseInertia << "impulse"
+                                                        << QList<double>{16.0 / 9.0};
     }
 
     // The boxes of lesson 3 moving apart: v_A = (-1, 0, 0), v_B = (1, 0, 0), v_rel.n = +2:
@@ -392,7 +489,7 @@ private slots:
     // Every model has a stable id, an equation and an explanation, and is found by its id.
     void catalogue()
     {
-        QCOMPARE(rbw::mistakeCatalogue().size(), size_t(25));   // 15 of issue 10, 10 of issue 21
+        QCOMPARE(rbw::mistakeCatalogue().size(), size_t(34));   // 15 of issue 10, 19 of issue 21
         for (const rbw::MistakeInfo& m : rbw::mistakeCatalogue()) {
             QVERIFY(rbw::findMistake(m.id) == &m);
             QVERIFY(std::strlen(m.equation) > 0 && std::strlen(m.explanation) > 0);
