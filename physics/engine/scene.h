@@ -135,12 +135,11 @@ struct SceneDef {
     // The contact model (docs/collisions.md). The keys below belong to the manifold
     // model; a course scene leaves them unset (validate() refuses them there).
     ContactModel contactModel = ContactModel::Course;
-    std::optional<long> solverIterations = std::nullopt;  // velocity iterations; none: 10
-    std::optional<bool> sleep = std::nullopt;             // bodies at rest sleep; none: true
-    std::optional<PositionFix> positionFix = std::nullopt;   // none: Ngs
-    int solverIterationsOr() const { return static_cast<int>(solverIterations.value_or(10)); }
-    bool sleepOr() const { return sleep.value_or(true); }
-    PositionFix positionFixOr() const { return positionFix.value_or(PositionFix::Ngs); }
+    // Unset: the default of ManifoldSettings (manifold/settings.h), the one set of the
+    // model's defaults (manifoldSettings(scene) reads a scene's choices).
+    std::optional<long> solverIterations = std::nullopt;  // velocity iterations
+    std::optional<bool> sleep = std::nullopt;             // bodies at rest sleep
+    std::optional<PositionFix> positionFix = std::nullopt;
 
     // Energy-jump blow-up detection (World::step, docs/stability.md): a step stops the
     // run when a body's kinetic energy after the integration exceeds

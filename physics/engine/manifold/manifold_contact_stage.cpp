@@ -34,9 +34,9 @@ void ManifoldContactStage::run(StepContext& ctx)
     if (ctx.trace != nullptr) recordPoints(ctx);
     // Keep the impulses of this step's manifolds, and of the sleeping pairs not solved.
     ctx.contacts.cache.store(w.manifolds, [&ctx](std::uint64_t key) {
-        const int a = static_cast<int>(key >> 32);
-        const std::uint64_t low = key & 0xffffffffu;
-        const int b = low >= (std::uint64_t{1} << 31) ? -1 : static_cast<int>(low);
+        const ManifoldKeyParts pair = decodeManifoldKey(key);
+        const int a = pair.a;
+        const int b = pair.b;
         if (a >= static_cast<int>(ctx.states.size()) || b >= static_cast<int>(ctx.states.size())) return false;
         const bool sleepingA = sleepingBody(ctx, a);
         return sleepingA && (b < 0 || !awakeMovable(ctx, b));
@@ -161,17 +161,18 @@ void ManifoldContactStage::solve(StepContext& ctx)
         sb.omega_W = s.omega_W + h * (s.Iinv_W * load.q_W);
     }
     w.solver.prepare(w.manifolds, w.bodies, n, ctx.states, w.settings, h, ctx.scene.restitutionThreshold);
+    w.solver.warmStart(w.bodies);
     // Sequential impulses: up to solver_iterations sweeps, stopping when no accumulated
     // impulse changed by more than the convergence tolerance in a sweep. With a trace,
     // every point's impulses after each iteration are kept (recordPoints).
     w.iterationsUsed = 0;
     for (int it = 1; it <= w.settings.iterations && !w.manifolds.empty(); ++it) {
-        const double largest = w.solver.iterate(w.bodies, w.settings.normalSweeps);
-        if (ctx.trace != nullptr) w.solver.recordIterate();
+        const double largest = w.solver.solve(w.bodies, w.settings.normalSweeps);
+        if (ctx.trace != nullptr) w.solver.recordIteration();
         w.iterationsUsed = it;
         if (largest <= w.settings.convergence) break;
     }
-    w.solver.finish(w.manifolds, w.bodies);
+    w.solver.store(w.manifolds, w.bodies);
     record(ctx.trace, q::solver_iterations_used, -1, double(w.iterationsUsed));
     // The impulses become loads of the integration: F_c = P / h, q_c = L_c / h.
     for (int b = 0; b < n; ++b) {
@@ -219,8 +220,9 @@ void ManifoldContactStage::recordPoints(StepContext& ctx) const
             header.resolution = "manifold";
             header.pointCount = m.count;
             header.separating = p.lambda_n == 0.0;
+            header.iteration = ContactSolver::kIteration;
             // The accumulated impulses after each velocity iteration (the solver's
-            // history, ContactSolver::recordIterate), lambda_t = lambda_t1 t1 + lambda_t2 t2
+            // history, ContactSolver::recordIteration), lambda_t = lambda_t1 t1 + lambda_t2 t2
             const std::vector<PointImpulses>& history = w.solver.history();
             const std::size_t stride = static_cast<std::size_t>(w.solver.pointCount());
             for (std::size_t it = 0; stride > 0 && (it + 1) * stride <= history.size(); ++it) {
@@ -234,7 +236,7 @@ void ManifoldContactStage::recordPoints(StepContext& ctx) const
             ctx.trace->add(q::manifold_depth, m.a, -p.separation, i, m.where);
             ctx.trace->add(q::feature_id, m.a, double(p.feature), i, m.where);
             // The solver's numbers (contact_solver.cpp: ContactSolver::prepare, warmStart,
-            // ContactSolver::iterate), accumulated over the iterations.
+            // ContactSolver::solve), accumulated over the iterations.
             record(ctx.trace, q::manifold_normal_velocity, m.a, p.normalVelocity, i);
             const QuantityInfo& target = w.settings.positionFix == PositionFix::Baumgarte
                                              ? q::target_normal_velocity_baumgarte

@@ -2,6 +2,8 @@
 // sources in position_fix.h.
 #include "physics/engine/manifold/position_fix.h"
 
+#include "physics/engine/manifold/contact_axis.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -90,10 +92,8 @@ double NgsSolver::iterate(std::vector<BodyState>& states, const ManifoldSettings
             const Vec3 mid_W = 0.5 * (pA_W + pB_W);
             const Vec3 r_A_W = mid_W - A.x_W;
             const Vec3 r_B_W = row.b >= 0 ? Vec3(mid_W - B.x_W) : Vec3::Zero();
-            const Vec3 rAxn_W = r_A_W.cross(n_W);
-            const Vec3 rBxn_W = r_B_W.cross(n_W);
             // K = 1/M_A + 1/M_B + (r_A x n) . I_A^-1 (r_A x n) + (r_B x n) . I_B^-1 (r_B x n)
-            const double K = row.invMA + row.invMB + rAxn_W.dot(IinvA_W * rAxn_W) + rBxn_W.dot(IinvB_W * rBxn_W);
+            const double K = ContactAxis(r_A_W, r_B_W, n_W, IinvA_W, IinvB_W).inverseMass(row.invMA + row.invMB);
             if (K <= 0.0) continue;
             // P = -C / K along n
             const Vec3 P_W = (-C / K) * n_W;

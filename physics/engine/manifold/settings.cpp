@@ -6,10 +6,11 @@ namespace rbw {
 
 ManifoldSettings manifoldSettings(const SceneDef& scene)
 {
+    // The defaults are ManifoldSettings' own (settings.h); a scene's key replaces one.
     ManifoldSettings s;
-    s.iterations = scene.solverIterationsOr();
-    s.sleep = scene.sleepOr();
-    s.positionFix = scene.positionFixOr();
+    if (scene.solverIterations) s.iterations = static_cast<int>(*scene.solverIterations);
+    if (scene.sleep) s.sleep = *scene.sleep;
+    if (scene.positionFix) s.positionFix = *scene.positionFix;
     return s;
 }
 

@@ -5,6 +5,7 @@
 #include "tests/test_support.h"
 
 #include "app/scene/scene_loader.h"
+#include "physics/engine/manifold/settings.h"
 #include "physics/engine/world.h"
 
 #include <QJsonArray>
@@ -40,17 +41,20 @@ private slots:
             rbw::parseScene(sceneJson(QStringLiteral(R"("contact_model": "manifold",)")), QStringLiteral("s.json"));
         QVERIFY(manifold.ok());
         QCOMPARE(manifold.scene->contactModel, rbw::ContactModel::Manifold);
-        QCOMPARE(manifold.scene->solverIterationsOr(), 10);
-        QCOMPARE(manifold.scene->sleepOr(), true);
-        QCOMPARE(manifold.scene->positionFixOr(), rbw::PositionFix::Ngs);
+        // Unset keys: ManifoldSettings' defaults, the model's one set of them (settings.h)
+        const rbw::ManifoldSettings defaults = rbw::manifoldSettings(*manifold.scene);
+        QCOMPARE(defaults.iterations, 10);
+        QCOMPARE(defaults.sleep, true);
+        QCOMPARE(defaults.positionFix, rbw::PositionFix::Ngs);
         const rbw::SceneLoadResult set = rbw::parseScene(
             sceneJson(QStringLiteral(
                 R"("contact_model": "manifold", "solver_iterations": 25, "sleep": false, "position_fix": "baumgarte",)")),
             QStringLiteral("s.json"));
         QVERIFY(set.ok());
-        QCOMPARE(set.scene->solverIterationsOr(), 25);
-        QCOMPARE(set.scene->sleepOr(), false);
-        QCOMPARE(set.scene->positionFixOr(), rbw::PositionFix::Baumgarte);
+        const rbw::ManifoldSettings chosen = rbw::manifoldSettings(*set.scene);
+        QCOMPARE(chosen.iterations, 25);
+        QCOMPARE(chosen.sleep, false);
+        QCOMPARE(chosen.positionFix, rbw::PositionFix::Baumgarte);
     }
 
     // Each bad value is refused with its field and reason, through the real rbw (exit 2).

@@ -405,8 +405,9 @@ private slots:
         rbw::ManifoldSettings settings;
         rbw::ContactSolver solver;
         solver.prepare(manifolds, bodies, 1, start, settings, kH, 1.0);
-        solver.iterate(bodies, sweeps);
-        solver.finish(manifolds, bodies);
+        solver.warmStart(bodies);
+        solver.solve(bodies, sweeps);
+        solver.store(manifolds, bodies);
         m = manifolds[0];
         const double expected = kG * kH / 4.0;
         double worst = 0.0;
