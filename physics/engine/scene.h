@@ -91,6 +91,10 @@ enum class ContactModel { Course, Manifold };
 //              kinetic energy, kept for comparison;
 //   None       no position fix at all.
 enum class PositionFix { Ngs, Baumgarte, None };
+// The manifold model's velocity solver (docs/collisions.md): warm-started sequential
+// impulses with the NGS position fix, or Box2D v3's soft step (substeps, soft contacts,
+// relax, restitution at the end).
+enum class ManifoldSolver { SequentialImpulses, SoftStep };
 
 // Per-pair overrides of the scene-wide restitution and friction. B is a body, or a
 // plane when planeB >= 0. A pair overrides at least one of the two, names two
@@ -140,6 +144,8 @@ struct SceneDef {
     std::optional<long> solverIterations = std::nullopt;  // velocity iterations
     std::optional<bool> sleep = std::nullopt;             // bodies at rest sleep
     std::optional<PositionFix> positionFix = std::nullopt;
+    std::optional<ManifoldSolver> solver = std::nullopt;
+    std::optional<long> substeps = std::nullopt;          // soft step: substeps per step
 
     // Energy-jump blow-up detection (World::step, docs/stability.md): a step stops the
     // run when a body's kinetic energy after the integration exceeds

@@ -44,6 +44,9 @@ struct ManifoldPoint {
     double m_n = 0.0, m_t1 = 0.0, m_t2 = 0.0;
     double v_target = 0.0;
     double lambda_n = 0.0, lambda_t1 = 0.0, lambda_t2 = 0.0;
+    // Soft step (soft_step_solver.cpp, store): the step's impulse, summed over substeps
+    double P_n = 0.0;
+    Vec3 P_t_W = Vec3::Zero();
     // Warm start (warm_start.cpp): what was carried over from the last step
     double warm_n = 0.0;
     Vec3 warm_t_W = Vec3::Zero();

@@ -23,8 +23,10 @@ Vec3 currentNormal(ReferenceSide reference, const Vec3& nRef_R, const BodyState&
     return nRef_R;
 }
 
+} // namespace
+
 // r <- (r + 1/2 (0, theta) r) / |.|, and R = R(r): a small rotation by theta.
-void rotate(BodyState& s, const Vec3& theta_W)
+void rotateBy(BodyState& s, const Vec3& theta_W)
 {
     const Quat dq(0.0, theta_W.x(), theta_W.y(), theta_W.z());
     const Quat rate = dq * s.q_WB;
@@ -33,8 +35,6 @@ void rotate(BodyState& s, const Vec3& theta_W)
     s.q_WB.coeffs() *= 1.0 / s.q_WB.coeffs().norm();
     s.R_WB = s.q_WB.toRotationMatrix();
 }
-
-} // namespace
 
 double currentSeparation(const Manifold& m, int k, const BodyState& A, const BodyState* B)
 {
@@ -101,12 +101,12 @@ double NgsSolver::iterate(std::vector<BodyState>& states, const ManifoldSettings
             const Vec3 dxA = row.invMA * P_W;
             A.x_W += dxA;
             dxA_W += dxA;
-            if (row.angularA) rotate(A, IinvA_W * r_A_W.cross(P_W));
+            if (row.angularA) rotateBy(A, IinvA_W * r_A_W.cross(P_W));
             if (row.b >= 0) {
                 const Vec3 dxB = -row.invMB * P_W;
                 B.x_W += dxB;
                 dxB_W += dxB;
-                if (row.angularB) rotate(B, -(IinvB_W * r_B_W.cross(P_W)));
+                if (row.angularB) rotateBy(B, -(IinvB_W * r_B_W.cross(P_W)));
             }
         }
         dx_W[static_cast<std::size_t>(row.a)] += dxA_W;

@@ -55,6 +55,14 @@ private slots:
         QCOMPARE(chosen.iterations, 25);
         QCOMPARE(chosen.sleep, false);
         QCOMPARE(chosen.positionFix, rbw::PositionFix::Baumgarte);
+        QCOMPARE(defaults.solver, rbw::ManifoldSolver::SequentialImpulses);
+        QCOMPARE(defaults.substeps, 4);
+        const rbw::SceneLoadResult soft = rbw::parseScene(
+            sceneJson(QStringLiteral(R"("contact_model": "manifold", "solver": "soft-step", "substeps": 6,)")),
+            QStringLiteral("s.json"));
+        QVERIFY(soft.ok());
+        QCOMPARE(rbw::manifoldSettings(*soft.scene).solver, rbw::ManifoldSolver::SoftStep);
+        QCOMPARE(rbw::manifoldSettings(*soft.scene).substeps, 6);
     }
 
     // Each bad value is refused with its field and reason, through the real rbw (exit 2).
@@ -86,6 +94,17 @@ private slots:
             << R"("contact_model": "manifold", "plane_contacts": "average",)"
             << "plane_contacts: belongs to the course model; the manifold model keeps every corner below a plane as a "
                "point of its manifold";
+        QTest::newRow("unknown solver") << R"("contact_model": "manifold", "solver": "soft",)"
+                                        << R"(solver: must be "sequential-impulses" or "soft-step", got "soft")";
+        QTest::newRow("substeps 0") << R"("contact_model": "manifold", "solver": "soft-step", "substeps": 0,)"
+                                    << "substeps: must be a whole number from 1 to 64, got 0";
+        QTest::newRow("substeps without the soft step") << R"("contact_model": "manifold", "substeps": 4,)"
+                                                        << R"(substeps: belongs to the soft step; add "solver": "soft-step")";
+        QTest::newRow("position fix with the soft step")
+            << R"("contact_model": "manifold", "solver": "soft-step", "position_fix": "ngs",)"
+            << "position_fix: belongs to the sequential impulses; the soft step pushes overlap out inside its substeps";
+        QTest::newRow("solver in the course model") << R"("solver": "soft-step",)"
+            << R"(solver: the key belongs to the manifold model; add "contact_model": "manifold" or leave it out)";
         QTest::newRow("misspelt key") << R"("contact_modle": "manifold",)"
                                       << R"(contact_modle: unknown key (did you mean "contact_model"?))";
     }
