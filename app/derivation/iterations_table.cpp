@@ -9,7 +9,8 @@ namespace rbw {
 
 // @iterations: the contact's accumulated impulses after each velocity iteration of the
 // manifold solver (ContactHeader::iterations), after the warm start they began from, as
-// one table; nothing for a contact of the course model (one impulse, no iterations).
+// one table, with what one iteration is (the solver's ContactHeader::iteration) under
+// it; nothing for a contact of the course model (one impulse, no iterations).
 QString TemplateExpander::iterations(const TemplateNode& n, const ExpansionContext& ctx)
 {
     const int k = ctx.look.contact;
@@ -41,7 +42,13 @@ QString TemplateExpander::iterations(const TemplateNode& n, const ExpansionConte
                      .arg(numberLatex(h.iterations[i].lambda_n, digits_), tuple(h.iterations[i].lambda_t_W));
     }
     latex += QStringLiteral("\\end{array}");
-    return displayMathHtml(latex);
+    // What one row is, in the solver's words (ContactHeader::iteration)
+    QString caption;
+    if (h.iteration != nullptr && h.iteration[0] != '\0') {
+        caption = QStringLiteral("<p class=\"iteration-caption\">One iteration: %1.</p>")
+                      .arg(QString::fromUtf8(h.iteration).toHtmlEscaped());
+    }
+    return displayMathHtml(latex) + caption;
 }
 
 } // namespace rbw

@@ -49,6 +49,10 @@ constexpr std::array kRows{
            "manifold model: velocity iterations (empty: the default)", S::Scene},
     KeyRow{K::Sleep, S::Scene, "sleep", T::Boolean, C::None, false, "", "", "manifold model: bodies at rest sleep", S::Scene},
     KeyRow{K::PositionFix, S::Scene, "position_fix", T::Word, C::PositionFix, false, "", "", "manifold model: how overlap is removed", S::Scene},
+    KeyRow{K::Solver, S::Scene, "solver", T::Word, C::ManifoldSolver, false, "", "",
+           "manifold model: sequential impulses or the soft step (substeps, soft contacts)", S::Scene},
+    KeyRow{K::Substeps, S::Scene, "substeps", T::Integer, C::None, false, "", "",
+           "soft step: substeps per step, 1 to 64 (empty: the default)", S::Scene},
     // energy_jump
     KeyRow{K::EnergyJumpFactor, S::EnergyJump, "factor", T::Number, C::None, false, "", "10", "blow-up bound: 0 (off) or \u2265 1", S::Scene},
     KeyRow{K::EnergyJumpFloor, S::EnergyJump, "floor", T::Number, C::None, false, "J", "1e-09", "blow-up bound floor, \u2265 0", S::Scene},
@@ -164,6 +168,7 @@ QStringList words(Choices c)
     case Choices::PlaneContacts: return wordList(kPlaneContactWords);
     case Choices::ContactModel: return wordList(kContactModelWords);
     case Choices::PositionFix: return wordList(kPositionFixWords);
+    case Choices::ManifoldSolver: return wordList(kManifoldSolverWords);
     }
     return {};
 }
@@ -189,6 +194,8 @@ template <>
 constexpr Choices choicesOf<ContactModel>() { return Choices::ContactModel; }
 template <>
 constexpr Choices choicesOf<PositionFix>() { return Choices::PositionFix; }
+template <>
+constexpr Choices choicesOf<ManifoldSolver>() { return Choices::ManifoldSolver; }
 
 template <typename E>
 QString wordOf(E v)
@@ -202,6 +209,7 @@ QString word(InertiaConvention v) { return wordOf(v); }
 QString word(PlaneContactMode v) { return wordOf(v); }
 QString word(ContactModel v) { return wordOf(v); }
 QString word(PositionFix v) { return wordOf(v); }
+QString word(ManifoldSolver v) { return wordOf(v); }
 
 template <typename E>
 std::optional<E> fromWord(const QString& w)
@@ -215,5 +223,6 @@ template std::optional<InertiaConvention> fromWord<InertiaConvention>(const QStr
 template std::optional<PlaneContactMode> fromWord<PlaneContactMode>(const QString&);
 template std::optional<ContactModel> fromWord<ContactModel>(const QString&);
 template std::optional<PositionFix> fromWord<PositionFix>(const QString&);
+template std::optional<ManifoldSolver> fromWord<ManifoldSolver>(const QString&);
 
 } // namespace rbw::sceneformat

@@ -35,7 +35,7 @@ enum class Key {
     // the top level, in the order the loader lists them
     Name, Description, Dt, Steps, Integrator, InertiaConvention, Gravity, Bodies, Forces, Torques, Push, Probes,
     Planes, BoxCollisions, Restitution, RestitutionThreshold, Friction, Pairs, PositionCorrection, PlaneContacts,
-    EnergyJump, ContactModel, SolverIterations, Sleep, PositionFix,
+    EnergyJump, ContactModel, SolverIterations, Sleep, PositionFix, Solver, Substeps,
     EnergyJumpFactor, EnergyJumpFloor,
     BodyName, BodySize, BodyMass, BodyFixed, BodyPosition, BodyOrientation, BodyLinearVelocity, BodyAngularVelocity,
     BodyAngularResponse, BodyIntegrator, BodyInertiaConvention,
@@ -64,7 +64,7 @@ enum class Type {
 };
 
 // The words a Word key allows (and the integrators a string names).
-enum class Choices { None, Integrator, InertiaConvention, PlaneContacts, ContactModel, PositionFix };
+enum class Choices { None, Integrator, InertiaConvention, PlaneContacts, ContactModel, PositionFix, ManifoldSolver };
 
 struct KeyRow {
     Key id;
@@ -100,6 +100,7 @@ QString word(InertiaConvention v);
 QString word(PlaneContactMode v);
 QString word(ContactModel v);
 QString word(PositionFix v);
+QString word(ManifoldSolver v);
 template <typename E>
 std::optional<E> fromWord(const QString& w);
 

@@ -334,6 +334,10 @@ SceneDef toScene(const QJsonObject& top, const QString& fileLabel)
     if (o.has(K::PositionFix)) {
         s.positionFix = toWord<PositionFix>(o.value(K::PositionFix), o.at(K::PositionFix), sceneformat::Choices::PositionFix);
     }
+    if (o.has(K::Solver)) {
+        s.solver = toWord<ManifoldSolver>(o.value(K::Solver), o.at(K::Solver), sceneformat::Choices::ManifoldSolver);
+    }
+    if (o.has(K::Substeps)) s.substeps = toInteger(o.value(K::Substeps), o.at(K::Substeps));
     return s;
 }
 

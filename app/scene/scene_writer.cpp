@@ -135,6 +135,8 @@ Layout layout(const SceneDef& s)
     if (s.solverIterations) l.settings.append({key(K::SolverIterations), whole(*s.solverIterations)});
     if (s.sleep) l.settings.append({key(K::Sleep), *s.sleep});
     if (s.positionFix) l.settings.append({key(K::PositionFix), positionFix(*s.positionFix)});
+    if (s.solver) l.settings.append({key(K::Solver), word(*s.solver)});
+    if (s.substeps) l.settings.append({key(K::Substeps), whole(*s.substeps)});
     QList<Members> bodies, planes, forces, torques, probes, pairs;
     for (const BodyDef& b : s.bodies) bodies << bodyMembers(b);
     for (const PlaneDef& p : s.planes) planes << planeMembers(p);
@@ -377,6 +379,10 @@ QStringList sceneDifferences(const SceneDef& a, const SceneDef& b)
             b.sleep ? QString::number(*b.sleep) : QStringLiteral("(none)"));
     d.value(key(K::PositionFix), a.positionFix ? positionFix(*a.positionFix) : QStringLiteral("(none)"),
             b.positionFix ? positionFix(*b.positionFix) : QStringLiteral("(none)"));
+    d.value(key(K::Solver), a.solver ? word(*a.solver) : QStringLiteral("(none)"),
+            b.solver ? word(*b.solver) : QStringLiteral("(none)"));
+    d.value(key(K::Substeps), a.substeps ? QString::number(*a.substeps) : QStringLiteral("(none)"),
+            b.substeps ? QString::number(*b.substeps) : QStringLiteral("(none)"));
     return d.out;
 }
 

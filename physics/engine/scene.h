@@ -91,6 +91,10 @@ enum class ContactModel { Course, Manifold };
 //              kinetic energy, kept for comparison;
 //   None       no position fix at all.
 enum class PositionFix { Ngs, Baumgarte, None };
+// The manifold model's velocity solver (docs/collisions.md): warm-started sequential
+// impulses with the NGS position fix, or Box2D v3's soft step (substeps, soft contacts,
+// relax, restitution at the end).
+enum class ManifoldSolver { SequentialImpulses, SoftStep };
 
 // Per-pair overrides of the scene-wide restitution and friction. B is a body, or a
 // plane when planeB >= 0. A pair overrides at least one of the two, names two
@@ -135,12 +139,13 @@ struct SceneDef {
     // The contact model (docs/collisions.md). The keys below belong to the manifold
     // model; a course scene leaves them unset (validate() refuses them there).
     ContactModel contactModel = ContactModel::Course;
-    std::optional<long> solverIterations = std::nullopt;  // velocity iterations; none: 10
-    std::optional<bool> sleep = std::nullopt;             // bodies at rest sleep; none: true
-    std::optional<PositionFix> positionFix = std::nullopt;   // none: Ngs
-    int solverIterationsOr() const { return static_cast<int>(solverIterations.value_or(10)); }
-    bool sleepOr() const { return sleep.value_or(true); }
-    PositionFix positionFixOr() const { return positionFix.value_or(PositionFix::Ngs); }
+    // Unset: the default of ManifoldSettings (manifold/settings.h), the one set of the
+    // model's defaults (manifoldSettings(scene) reads a scene's choices).
+    std::optional<long> solverIterations = std::nullopt;  // velocity iterations
+    std::optional<bool> sleep = std::nullopt;             // bodies at rest sleep
+    std::optional<PositionFix> positionFix = std::nullopt;
+    std::optional<ManifoldSolver> solver = std::nullopt;
+    std::optional<long> substeps = std::nullopt;          // soft step: substeps per step
 
     // Energy-jump blow-up detection (World::step, docs/stability.md): a step stops the
     // run when a body's kinetic energy after the integration exceeds

@@ -1,5 +1,5 @@
 // The words of the scene's enumerations, spelled once: what a scene file writes for
-// an InertiaConvention, a PlaneContactMode, a ContactModel or a PositionFix
+// an InertiaConvention, a PlaneContactMode, a ContactModel, a PositionFix or a ManifoldSolver
 // ("inertia_convention": "course-template"; docs/scene-format.md). The words belong to
 // the enumerations, so they live beside them in the physics (as stageName() and the
 // integrators' names do), and every room that shows or reads one uses these: the
@@ -24,12 +24,14 @@ inline constexpr std::array<std::string_view, 2> kInertiaConventionWords{"standa
 inline constexpr std::array<std::string_view, 2> kPlaneContactWords{"per-point", "average"};
 inline constexpr std::array<std::string_view, 2> kContactModelWords{"course", "manifold"};
 inline constexpr std::array<std::string_view, 3> kPositionFixWords{"ngs", "baumgarte", "none"};
+inline constexpr std::array<std::string_view, 2> kManifoldSolverWords{"sequential-impulses", "soft-step"};
 
 // An enumeration with one more value than its list has words fails here.
 static_assert(static_cast<std::size_t>(InertiaConvention::CourseTemplate) + 1 == kInertiaConventionWords.size());
 static_assert(static_cast<std::size_t>(PlaneContactMode::Average) + 1 == kPlaneContactWords.size());
 static_assert(static_cast<std::size_t>(ContactModel::Manifold) + 1 == kContactModelWords.size());
 static_assert(static_cast<std::size_t>(PositionFix::None) + 1 == kPositionFixWords.size());
+static_assert(static_cast<std::size_t>(ManifoldSolver::SoftStep) + 1 == kManifoldSolverWords.size());
 
 // The words of enumeration E, in its order.
 template <typename E>
@@ -42,6 +44,8 @@ template <>
 constexpr std::span<const std::string_view> sceneWords<ContactModel>() { return kContactModelWords; }
 template <>
 constexpr std::span<const std::string_view> sceneWords<PositionFix>() { return kPositionFixWords; }
+template <>
+constexpr std::span<const std::string_view> sceneWords<ManifoldSolver>() { return kManifoldSolverWords; }
 
 // A value's word: sceneWord(ContactModel::Manifold) is "manifold".
 template <typename E>

@@ -88,6 +88,7 @@ struct ContactHeader {
     int pointCount = 1;        // corners averaged into this contact ("average")
     bool separating = false;   // v_rel . n > 0: no impulse was applied
     std::vector<ImpulseIterate> iterations;   // manifold model: after each iteration, in order
+    const char* iteration = "";   // manifold model: what one entry of `iterations` is (the solver's words)
 };
 
 // A probe point read at the start of the step: p = x + R p_B, v_p = v + omega x (p - x).

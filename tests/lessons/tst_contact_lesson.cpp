@@ -30,8 +30,11 @@ private slots:
         QTest::addColumn<QString>("file");
         QTest::addColumn<QString>("ownRow");
         QTest::addColumn<QString>("otherRow");
-        QTest::newRow("manifold") << "scene.json" << "feature id" << "lesson 3 derives it";
-        QTest::newRow("course") << "course.json" << "lesson 3 derives it" << "feature id";
+        QTest::addColumn<bool>("soft");
+        QTest::newRow("manifold") << "scene.json" << "sweep of the solver" << "lesson 3 derives it" << false;
+        QTest::newRow("course") << "course.json" << "lesson 3 derives it" << "feature id" << false;
+        // The same scene with the soft step: its own section, not the iterations' one
+        QTest::newRow("manifold, soft step") << "scene.json" << "The soft step" << "sweep of the solver" << true;
     }
 
     void derivationForBothModels()
@@ -39,7 +42,9 @@ private slots:
         QFETCH(QString, file);
         QFETCH(QString, ownRow);
         QFETCH(QString, otherRow);
-        const rbw::SceneDef scene = load(file);
+        QFETCH(bool, soft);
+        rbw::SceneDef scene = load(file);
+        if (soft) scene.solver = rbw::ManifoldSolver::SoftStep;
         rbw::World w(scene);
         rbw::StepTrace t;
         int withContacts = 0;
@@ -89,6 +94,9 @@ private slots:
             const int n = static_cast<int>(std::get<double>(used->value));
             QVERIFY(n >= 1);
             QCOMPARE(static_cast<int>(doc.html.count(QStringLiteral("\\\\ %1 &amp; ").arg(n))), warmRows);
+            // Under each table: what one iteration is (ContactHeader::iteration)
+            QCOMPARE(static_cast<int>(doc.html.count(QStringLiteral("One iteration: one sweep of the sequential impulses"))),
+                     warmRows);
         }
         // Misuse: @iterations outside @foreach contact
         const rbw::DerivationDocument wrong = rbw::buildDerivation(t, scene, QStringLiteral("# x\n@iterations\n"),

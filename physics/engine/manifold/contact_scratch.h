@@ -12,6 +12,7 @@
 #include "physics/engine/manifold/manifold.h"
 #include "physics/engine/manifold/settings.h"
 #include "physics/engine/manifold/sleep.h"
+#include "physics/engine/manifold/soft_step_solver.h"
 #include "physics/engine/manifold/warm_start.h"
 
 #include <utility>
@@ -27,6 +28,8 @@ struct ContactScratch {
     std::vector<SolverBody> bodies;    // one per body, and a last, static one for planes
     ContactSolver solver;              // this step's rows, impulses and iteration history
     int iterationsUsed = 0;            // velocity iterations of the last step
+    SoftStepSolver softSolver;         // the soft step's rows (solver "soft-step")
+    std::vector<SubstepMotion> motion; // the soft step's per-body loads and displacement, for the position stage
     // Broad-phase scratch
     AabbTree broadPhase;
     std::vector<Aabb> aabbs;

@@ -7,6 +7,8 @@
 //   P_W            an impulse applied at the point (on A; -P on B)             [N s]
 #include "physics/engine/manifold/contact_solver.h"
 
+#include "physics/engine/manifold/contact_axis.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -16,12 +18,6 @@ namespace rbw {
 namespace {
 
 constexpr double kSlidingSpeed = 0.1;   // [m/s]: slower, the tangents stay those of n (a wobble does not turn them)
-
-// 1 / k, or 0 for a row nothing can move (k = 0)
-double inverseOrZero(double k)
-{
-    return k > 0.0 ? 1.0 / k : 0.0;
-}
 
 // An impulse P_W at lever arms r_A, r_B: v_A += P / M_A, omega_A += I_A^-1 (r_A x P),
 // and the opposite for B.
@@ -144,11 +140,9 @@ void ContactSolver::prepare(std::vector<Manifold>& manifolds, std::vector<Solver
         if (m.count > 0) slidingTangents(m, startA, startB);
         Constraint c{m.n_W, m.t1_W, m.t2_W, m.mu, m.a, bIndex, static_cast<int>(points_.size()), m.count,
                      static_cast<int>(W_.size()), B.invM > 0.0 || !B.Iinv_W.isZero(0.0)};
-        // The normal rows' angular parts, for their coupling K below.
-        std::array<Vec3, kMaxManifoldPoints> rAxn_W{};
-        std::array<Vec3, kMaxManifoldPoints> rBxn_W{};
-        std::array<Vec3, kMaxManifoldPoints> IArAxn_W{};
-        std::array<Vec3, kMaxManifoldPoints> IBrBxn_W{};
+        // The normal rows' axes, for their coupling K below.
+        std::array<ContactAxis, kMaxManifoldPoints> normal{};
+        const double invMAB = A.invM + B.invM;
         for (int k = 0; k < m.count; ++k) {
             const std::size_t uk = static_cast<std::size_t>(k);
             ManifoldPoint& mp = m.points[uk];
@@ -156,43 +150,28 @@ void ContactSolver::prepare(std::vector<Manifold>& manifolds, std::vector<Solver
             // r_A = p - x_A, r_B = p - x_B
             p.r_A_W = mp.p_W - xA_W;
             p.r_B_W = mp.p_W - xB_W;
-            // The rows' angular parts r x d for d = n, t1, t2
-            rAxn_W[uk] = p.r_A_W.cross(m.n_W);
-            rBxn_W[uk] = p.r_B_W.cross(m.n_W);
-            IArAxn_W[uk] = A.Iinv_W * rAxn_W[uk];
-            IBrBxn_W[uk] = B.Iinv_W * rBxn_W[uk];
-            const Vec3 rAxt1_W = p.r_A_W.cross(m.t1_W);
-            const Vec3 rBxt1_W = p.r_B_W.cross(m.t1_W);
-            const Vec3 rAxt2_W = p.r_A_W.cross(m.t2_W);
-            const Vec3 rBxt2_W = p.r_B_W.cross(m.t2_W);
-            // m_n = 1 / (1/M_A + 1/M_B + [(I_A^-1 (r_A x n)) x r_A + (I_B^-1 (r_B x n)) x r_B] . n)
-            //     = 1 / (1/M_A + 1/M_B + (r_A x n) . I_A^-1 (r_A x n) + (r_B x n) . I_B^-1 (r_B x n))
-            const double invMAB = A.invM + B.invM;
-            p.m_n = inverseOrZero(invMAB + rAxn_W[uk].dot(IArAxn_W[uk]) + rBxn_W[uk].dot(IBrBxn_W[uk]));
-            // m_t1, m_t2 the same along t1 and t2
-            const Vec3 IArAxt2_W = A.Iinv_W * rAxt2_W;
-            const Vec3 IBrBxt2_W = B.Iinv_W * rBxt2_W;
-            const Vec3 IArAxt1_W = A.Iinv_W * rAxt1_W;
-            const Vec3 IBrBxt1_W = B.Iinv_W * rBxt1_W;
-            friction_.push_back(FrictionRows{IArAxt1_W, IArAxt2_W, IBrBxt1_W, IBrBxt2_W});
-            p.m_t1 = inverseOrZero(invMAB + rAxt1_W.dot(IArAxt1_W) + rBxt1_W.dot(IBrBxt1_W));
-            p.m_t2 = inverseOrZero(invMAB + rAxt2_W.dot(IArAxt2_W) + rBxt2_W.dot(IBrBxt2_W));
+            // The rows' axes d = n, t1, t2 (contact_axis.h): m_d = 1 / K_dd
+            normal[uk] = ContactAxis(p.r_A_W, p.r_B_W, m.n_W, A.Iinv_W, B.Iinv_W);
+            const ContactAxis t1(p.r_A_W, p.r_B_W, m.t1_W, A.Iinv_W, B.Iinv_W);
+            const ContactAxis t2(p.r_A_W, p.r_B_W, m.t2_W, A.Iinv_W, B.Iinv_W);
+            p.m_n = normal[uk].mass(invMAB);
+            friction_.push_back(FrictionRows{t1.IArAxd_W, t2.IArAxd_W, t1.IBrBxd_W, t2.IBrBxd_W});
+            p.m_t1 = t1.mass(invMAB);
+            p.m_t2 = t2.mass(invMAB);
             // K_12 = (r_A x t1) . I_A^-1 (r_A x t2) + (r_B x t1) . I_B^-1 (r_B x t2)
             // (the linear part drops out: t1 . t2 = 0)
-            p.K_t12 = rAxt1_W.dot(IArAxt2_W) + rBxt1_W.dot(IBrBxt2_W);
+            p.K_t12 = t1.angularCoupling(t2);
             // v_n = (v_A + omega_A x r_A - v_B - omega_B x r_B) . n at the start of the step
             Vec3 dv_W = startA.v_W + startA.omega_W.cross(p.r_A_W);
             if (startB != nullptr) dv_W -= startB->v_W + startB->omega_W.cross(p.r_B_W);
             mp.normalVelocity = dv_W.dot(m.n_W);
             p.v_target = targetNormalVelocity(mp, m, settings, h, restitutionThreshold);
-            // The warm start: last step's impulses, lambda_n as warmStart() matched it and
-            // the friction impulse on this step's tangents, lambda_ti = lambda_t^0 . t_i
+            // The warm start (applied by warmStart()): last step's impulses, lambda_n as
+            // ManifoldCache::warmStart matched it and the friction impulse on this step's
+            // tangents, lambda_ti = lambda_t^0 . t_i
             p.lambda_n = mp.lambda_n;
             p.lambda_t1 = mp.warm_t_W.dot(m.t1_W);
             p.lambda_t2 = mp.warm_t_W.dot(m.t2_W);
-            // applied: P = lambda_n n + lambda_t1 t1 + lambda_t2 t2
-            const Vec3 P_W = p.lambda_n * m.n_W + p.lambda_t1 * m.t1_W + p.lambda_t2 * m.t2_W;
-            applyImpulse(A, B, p.r_A_W, p.r_B_W, P_W);
             // What the trace shows of the point
             mp.r_A_W = p.r_A_W;
             mp.r_B_W = p.r_B_W;
@@ -208,12 +187,12 @@ void ContactSolver::prepare(std::vector<Manifold>& manifolds, std::vector<Solver
         // impulse at point j changes v_n at point i by K_ij times it,
         //   K_ij = 1/M_A + 1/M_B + (r_Ai x n) . I_A^-1 (r_Aj x n) + (r_Bi x n) . I_B^-1 (r_Bj x n)
         // kept as m_n,i K_ij, the change of point i's step m_n,i (v_target,i - v_n,i), by
-        // columns: W_[firstW + j count + i] = m_n,i K_ij (iterate()).
+        // columns: W_[firstW + j count + i] = m_n,i K_ij (solve()).
         for (int j = 0; j < m.count; ++j) {
             for (int i = 0; i < m.count; ++i) {
                 const std::size_t ui = static_cast<std::size_t>(i);
                 const std::size_t uj = static_cast<std::size_t>(j);
-                const double K_ij = A.invM + B.invM + rAxn_W[ui].dot(IArAxn_W[uj]) + rBxn_W[ui].dot(IBrBxn_W[uj]);
+                const double K_ij = normal[ui].coupling(invMAB, normal[uj]);
                 W_.push_back(points_[static_cast<std::size_t>(c.first + i)].m_n * K_ij);
             }
         }
@@ -221,7 +200,21 @@ void ContactSolver::prepare(std::vector<Manifold>& manifolds, std::vector<Solver
     }
 }
 
-double ContactSolver::iterate(std::vector<SolverBody>& bodies, int normalSweeps)
+void ContactSolver::warmStart(std::vector<SolverBody>& bodies) const
+{
+    for (const Constraint& c : constraints_) {
+        SolverBody& A = bodies[static_cast<std::size_t>(c.a)];
+        SolverBody& B = bodies[static_cast<std::size_t>(c.b)];
+        for (int k = 0; k < c.count; ++k) {
+            const Point& p = points_[static_cast<std::size_t>(c.first + k)];
+            // P = lambda_n n + lambda_t1 t1 + lambda_t2 t2, last step's impulses
+            const Vec3 P_W = p.lambda_n * c.n_W + p.lambda_t1 * c.t1_W + p.lambda_t2 * c.t2_W;
+            applyImpulse(A, B, p.r_A_W, p.r_B_W, P_W);
+        }
+    }
+}
+
+double ContactSolver::solve(std::vector<SolverBody>& bodies, int normalSweeps)
 {
     double largest = 0.0;
     for (const Constraint& c : constraints_) {
@@ -346,12 +339,12 @@ double ContactSolver::iterate(std::vector<SolverBody>& bodies, int normalSweeps)
     return largest;
 }
 
-void ContactSolver::recordIterate()
+void ContactSolver::recordIteration()
 {
     for (const Point& p : points_) history_.push_back(PointImpulses{p.lambda_n, p.lambda_t1, p.lambda_t2});
 }
 
-void ContactSolver::finish(std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies) const
+void ContactSolver::store(std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies) const
 {
     for (std::size_t i = 0; i < constraints_.size() && i < manifolds.size(); ++i) {
         const Constraint& c = constraints_[i];

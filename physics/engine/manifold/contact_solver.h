@@ -5,8 +5,9 @@
 // that follows the integration is position_fix.h.
 //
 // Velocity solve, at every manifold point, with effective masses
-//   m_n = 1 / (1/M_A + 1/M_B + [(I_A^-1 (r_A x n)) x r_A + (I_B^-1 (r_B x n)) x r_B] . n)
-// (and m_t1, m_t2 the same along t1, t2), in every iteration, manifold by manifold:
+//   m_n = 1 / (1/M_A + 1/M_B + (r_A x n) . I_A^-1 (r_A x n) + (r_B x n) . I_B^-1 (r_B x n))
+// (and m_t1, m_t2 the same along t1, t2; contact_axis.h), in every iteration, manifold
+// by manifold:
 //   normal:    lambda_n <- max(0, lambda_n + m_n (v_target - v_n)), for all points of
 //              the manifold, normal_sweeps times (ManifoldSettings::normalSweeps)
 //   friction:  lambda_ti* = lambda_ti - m_ti v_ti; inside the Coulomb cone
@@ -49,7 +50,7 @@ struct SolverBody {
     Vec3 omega_W = Vec3::Zero();
     double invM = 0.0;
     Mat3 Iinv_W = Mat3::Zero();
-    Vec3 P_W = Vec3::Zero();    // sum of the impulses on the body (ContactSolver::finish) [N s]
+    Vec3 P_W = Vec3::Zero();    // sum of the impulses on the body (ContactSolver::store) [N s]
     Vec3 Lc_W = Vec3::Zero();   // sum of their moments about the centre   [kg m^2/s]
 };
 
@@ -60,38 +61,56 @@ struct PointImpulses {
     double lambda_t2 = 0.0;
 };
 
+// The sequential-impulse solver in Box2D v3's shape (contact_solver.c; the soft step,
+// soft_step_solver.h, has the same functions and two more, relax and restitution, which
+// this solver does not need: its bounce is in v_target and its position fix is the NGS
+// pass after the integration). One step:
+//   prepare(); warmStart(); solve() up to `iterations` times; store().
+// One iteration (one call of solve(), one row of the derivation's @iterations table):
+// every manifold in turn, its normal rows normalSweeps times, then its friction rows.
 class ContactSolver {
 public:
+    // What one iteration is, for the trace (ContactHeader::iteration, the @iterations table).
+    static constexpr const char* kIteration =
+        "one sweep of the sequential impulses over every manifold in turn: its normal rows "
+        "in 3 passes together, then each point's two friction rows";
+    static_assert(ManifoldSettings{}.normalSweeps == 3, "kIteration names the passes over the normal rows");
     // For every manifold (A = bodies[m.a]; B = bodies[m.b], or bodies[planeBody] for a
     // plane): the tangents (along the sliding velocity when the pair slides), the lever
-    // arms, the effective masses, the start-of-step normal velocity v_n, the target
-    // v_target and the coupling of its normal rows; then applies the warm-start impulses
-    // (the points' lambda_n and warm_t_W as ManifoldCache::warmStart left them) to the
-    // bodies. Writes t1, t2 and each point's r_A, r_B, m_n, normalVelocity, v_target and
-    // lambda_t1, lambda_t2 into the manifolds. `start` is the bodies' state at the start
-    // of the step (their centres, and their velocities for the bounce).
+    // arms, the effective masses (contact_axis.h), the start-of-step normal velocity v_n,
+    // the target v_target and the coupling of its normal rows, and the warm-start
+    // impulses (the points' lambda_n and warm_t_W as ManifoldCache::warmStart left them,
+    // applied by warmStart()). Writes t1, t2 and each point's r_A, r_B, m_n,
+    // normalVelocity, v_target and lambda_t1, lambda_t2 into the manifolds. `start` is the
+    // bodies' state at the start of the step (their centres, and their velocities for the
+    // bounce). Reads of the bodies only their masses and inertias.
     void prepare(std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies, int planeBody,
                  const std::vector<BodyState>& start, const ManifoldSettings& settings, double h,
                  double restitutionThreshold);
 
+    // Applies the warm-start impulses prepare() took from the cache to the bodies:
+    // P = lambda_n n + lambda_t1 t1 + lambda_t2 t2 on A at r_A, -P on B at r_B.
+    void warmStart(std::vector<SolverBody>& bodies) const;
+
     // One velocity iteration over every manifold in order: normalSweeps passes over the
     // normal rows of all its points, then the friction rows of each point. Returns the
     // largest change of an accumulated impulse in it [N s].
-    double iterate(std::vector<SolverBody>& bodies, int normalSweeps);
+    double solve(std::vector<SolverBody>& bodies, int normalSweeps);
 
     // Appends every point's accumulated impulses to history() (call after an iteration).
-    void recordIterate();
+    void recordIteration();
 
     // Copies the accumulated impulses lambda_n, lambda_t1, lambda_t2 into the manifolds'
-    // points (the manifolds prepare() was given) and adds them to the bodies' sums P and
-    // L_c (the contact loads): P = lambda_n n + lambda_t1 t1 + lambda_t2 t2 on A and -P on
-    // B, with their moments r_A x P and -r_B x P.
-    void finish(std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies) const;
+    // points (the manifolds prepare() was given; the warm-start cache takes them from
+    // there) and adds them to the bodies' sums P and L_c (the contact loads):
+    // P = lambda_n n + lambda_t1 t1 + lambda_t2 t2 on A and -P on B, with their moments
+    // r_A x P and -r_B x P.
+    void store(std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies) const;
 
     // The points of all manifolds, in order (manifold by manifold, point by point).
     int pointCount() const { return static_cast<int>(points_.size()); }
     // history()[i * pointCount() + g]: point g's impulses after the (i+1)-th recorded
-    // iteration; empty unless recordIterate() was called.
+    // iteration; empty unless recordIteration() was called.
     const std::vector<PointImpulses>& history() const { return history_; }
 
 private:

@@ -11,6 +11,20 @@ std::uint64_t manifoldKey(int a, int b, int plane)
     return (static_cast<std::uint64_t>(a) << 32) | low;
 }
 
+ManifoldKeyParts decodeManifoldKey(std::uint64_t key)
+{
+    // a = key / 2^32; low = key mod 2^32: b below 2^31, else 2^31 + plane
+    ManifoldKeyParts parts;
+    parts.a = static_cast<int>(key >> 32);
+    const std::uint64_t low = key & 0xffffffffu;
+    if (low >= (std::uint64_t{1} << 31)) {
+        parts.plane = static_cast<int>(low - (std::uint64_t{1} << 31));
+    } else {
+        parts.b = static_cast<int>(low);
+    }
+    return parts;
+}
+
 std::uint64_t Manifold::key() const
 {
     return manifoldKey(a, b, plane);

@@ -37,13 +37,16 @@ struct ManifoldPoint {
     Vec3 pB_B = Vec3::Zero();
     double separation = 0.0;
     std::uint32_t feature = 0;
-    // Solver (contact_solver.cpp, ContactSolver::prepare and finish; for the trace)
+    // Solver (contact_solver.cpp, ContactSolver::prepare and store; for the trace)
     Vec3 r_A_W = Vec3::Zero();
     Vec3 r_B_W = Vec3::Zero();
     double normalVelocity = 0.0;   // v_n at the start of the step
     double m_n = 0.0, m_t1 = 0.0, m_t2 = 0.0;
     double v_target = 0.0;
     double lambda_n = 0.0, lambda_t1 = 0.0, lambda_t2 = 0.0;
+    // Soft step (soft_step_solver.cpp, store): the step's impulse, summed over substeps
+    double P_n = 0.0;
+    Vec3 P_t_W = Vec3::Zero();
     // Warm start (warm_start.cpp): what was carried over from the last step
     double warm_n = 0.0;
     Vec3 warm_t_W = Vec3::Zero();
@@ -74,8 +77,17 @@ struct Manifold {
     const char* featureName() const;
 };
 
-// The key of (a, b) or (a, plane): a in the high half, b (or plane, offset by 2^31) low.
+// The pair key and its parts, encoder and decoder side by side (manifold.cpp): a in the
+// high half, b (or the plane, offset by 2^31) in the low half,
+//   key = a 2^32 + b          for two bodies,
+//   key = a 2^32 + 2^31 + p   for body a and plane p.
+struct ManifoldKeyParts {
+    int a = -1;
+    int b = -1;       // -1 for a plane
+    int plane = -1;   // -1 for two bodies
+};
 std::uint64_t manifoldKey(int a, int b, int plane);
+ManifoldKeyParts decodeManifoldKey(std::uint64_t key);
 
 // A right-handed orthonormal basis (t1, t2, n) from the unit normal n, chosen by a fixed
 // rule so that the same n gives the same tangents in every step (Catto 2009 /

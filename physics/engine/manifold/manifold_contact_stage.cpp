@@ -34,9 +34,9 @@ void ManifoldContactStage::run(StepContext& ctx)
     if (ctx.trace != nullptr) recordPoints(ctx);
     // Keep the impulses of this step's manifolds, and of the sleeping pairs not solved.
     ctx.contacts.cache.store(w.manifolds, [&ctx](std::uint64_t key) {
-        const int a = static_cast<int>(key >> 32);
-        const std::uint64_t low = key & 0xffffffffu;
-        const int b = low >= (std::uint64_t{1} << 31) ? -1 : static_cast<int>(low);
+        const ManifoldKeyParts pair = decodeManifoldKey(key);
+        const int a = pair.a;
+        const int b = pair.b;
         if (a >= static_cast<int>(ctx.states.size()) || b >= static_cast<int>(ctx.states.size())) return false;
         const bool sleepingA = sleepingBody(ctx, a);
         return sleepingA && (b < 0 || !awakeMovable(ctx, b));
@@ -160,19 +160,11 @@ void ManifoldContactStage::solve(StepContext& ctx)
         sb.v_W = s.v_W + (h * mp.invM) * load.F_W;
         sb.omega_W = s.omega_W + h * (s.Iinv_W * load.q_W);
     }
-    w.solver.prepare(w.manifolds, w.bodies, n, ctx.states, w.settings, h, ctx.scene.restitutionThreshold);
-    // Sequential impulses: up to solver_iterations sweeps, stopping when no accumulated
-    // impulse changed by more than the convergence tolerance in a sweep. With a trace,
-    // every point's impulses after each iteration are kept (recordPoints).
-    w.iterationsUsed = 0;
-    for (int it = 1; it <= w.settings.iterations && !w.manifolds.empty(); ++it) {
-        const double largest = w.solver.iterate(w.bodies, w.settings.normalSweeps);
-        if (ctx.trace != nullptr) w.solver.recordIterate();
-        w.iterationsUsed = it;
-        if (largest <= w.settings.convergence) break;
+    if (w.settings.solver == ManifoldSolver::SoftStep) {
+        solveSoftStep(ctx);
+    } else {
+        solveSequentialImpulses(ctx);
     }
-    w.solver.finish(w.manifolds, w.bodies);
-    record(ctx.trace, q::solver_iterations_used, -1, double(w.iterationsUsed));
     // The impulses become loads of the integration: F_c = P / h, q_c = L_c / h.
     for (int b = 0; b < n; ++b) {
         if (!ctx.movable[static_cast<std::size_t>(b)]) continue;
@@ -203,9 +195,77 @@ void ManifoldContactStage::solve(StepContext& ctx)
     }
 }
 
+void ManifoldContactStage::solveSequentialImpulses(StepContext& ctx)
+{
+    ContactScratch& w = *world_;
+    const int n = static_cast<int>(ctx.states.size());
+    const double h = ctx.scene.dt;
+    w.solver.prepare(w.manifolds, w.bodies, n, ctx.states, w.settings, h, ctx.scene.restitutionThreshold);
+    w.solver.warmStart(w.bodies);
+    // Sequential impulses: up to solver_iterations sweeps, stopping when no accumulated
+    // impulse changed by more than the convergence tolerance in a sweep. With a trace,
+    // every point's impulses after each iteration are kept (recordPoints).
+    w.iterationsUsed = 0;
+    for (int it = 1; it <= w.settings.iterations && !w.manifolds.empty(); ++it) {
+        const double largest = w.solver.solve(w.bodies, w.settings.normalSweeps);
+        if (ctx.trace != nullptr) w.solver.recordIteration();
+        w.iterationsUsed = it;
+        if (largest <= w.settings.convergence) break;
+    }
+    w.solver.store(w.manifolds, w.bodies);
+    record(ctx.trace, q::solver_iterations_used, -1, double(w.iterationsUsed));
+}
+
+void ManifoldContactStage::solveSoftStep(StepContext& ctx)
+{
+    ContactScratch& w = *world_;
+    const int n = static_cast<int>(ctx.states.size());
+    const double h = ctx.scene.dt;
+    const int substeps = w.settings.substeps;
+    const double h_s = h / substeps;
+    // The soft step starts from v, not from v + h F/M: each substep adds h_s F/M itself.
+    // Its loads per body, a = F/M and alpha = I^-1 q (none for a body it does not move).
+    w.motion.assign(static_cast<std::size_t>(n + 1), SubstepMotion{});
+    for (int b = 0; b < n; ++b) {
+        if (!awakeMovable(ctx, b)) continue;
+        SolverBody& sb = w.bodies[static_cast<std::size_t>(b)];
+        const BodyState& s = ctx.states[static_cast<std::size_t>(b)];
+        const BodyLoad& load = ctx.loads[static_cast<std::size_t>(b)];
+        SubstepMotion& m = w.motion[static_cast<std::size_t>(b)];
+        m.a_W = ctx.mass[static_cast<std::size_t>(b)].invM * load.F_W;
+        m.alpha_W = s.Iinv_W * load.q_W;
+        sb.v_W = s.v_W;
+        sb.omega_W = s.omega_W;
+    }
+    SoftStepSolver& solver = w.softSolver;
+    solver.prepare(w.manifolds, w.bodies, n, ctx.states, w.settings, h_s);
+    for (int i = 0; i < substeps; ++i) {
+        SoftStepSolver::integrateVelocities(w.bodies, w.motion, h_s);
+        solver.warmStart(w.bodies);
+        solver.solve(w.bodies, w.motion);
+        SoftStepSolver::integratePositions(w.bodies, w.motion, h_s);
+        solver.relax(w.bodies, w.motion);
+        if (ctx.trace != nullptr) solver.recordSubstep();
+    }
+    solver.applyRestitution(w.bodies, ctx.scene.restitutionThreshold);
+    // What the integration gets: the step's impulses as loads (below); the loads it
+    // spent in the substeps are the same F and q, so v_{n+1} = v + h (F + P/h) / M.
+    solver.store(w.manifolds, w.bodies);
+    w.iterationsUsed = substeps;
+    record(ctx.trace, q::soft_substep, -1, h_s);
+    record(ctx.trace, q::soft_contact_hertz, -1, cappedContactHertz(w.settings.contactHertz, h_s));
+    record(ctx.trace, q::soft_bias_rate, -1, solver.contactSoftness().biasRate);
+    record(ctx.trace, q::soft_mass_scale, -1, solver.contactSoftness().massScale);
+    record(ctx.trace, q::soft_impulse_scale, -1, solver.contactSoftness().impulseScale);
+}
+
 void ManifoldContactStage::recordPoints(StepContext& ctx) const
 {
     const ContactScratch& w = *world_;
+    const bool soft = w.settings.solver == ManifoldSolver::SoftStep;
+    // The accumulated impulses after each iteration (sequential impulses) or substep (soft step)
+    const std::vector<PointImpulses>& history = soft ? w.softSolver.history() : w.solver.history();
+    const std::size_t stride = static_cast<std::size_t>(soft ? w.softSolver.pointCount() : w.solver.pointCount());
     int points = 0;
     for (const Manifold& m : w.manifolds) {
         for (int k = 0; k < m.count; ++k) {
@@ -219,10 +279,9 @@ void ManifoldContactStage::recordPoints(StepContext& ctx) const
             header.resolution = "manifold";
             header.pointCount = m.count;
             header.separating = p.lambda_n == 0.0;
+            header.iteration = soft ? SoftStepSolver::kIteration : ContactSolver::kIteration;
             // The accumulated impulses after each velocity iteration (the solver's
-            // history, ContactSolver::recordIterate), lambda_t = lambda_t1 t1 + lambda_t2 t2
-            const std::vector<PointImpulses>& history = w.solver.history();
-            const std::size_t stride = static_cast<std::size_t>(w.solver.pointCount());
+            // history, ContactSolver::recordIteration), lambda_t = lambda_t1 t1 + lambda_t2 t2
             for (std::size_t it = 0; stride > 0 && (it + 1) * stride <= history.size(); ++it) {
                 const PointImpulses& iterate = history[it * stride + static_cast<std::size_t>(points)];
                 header.iterations.push_back(
@@ -234,16 +293,19 @@ void ManifoldContactStage::recordPoints(StepContext& ctx) const
             ctx.trace->add(q::manifold_depth, m.a, -p.separation, i, m.where);
             ctx.trace->add(q::feature_id, m.a, double(p.feature), i, m.where);
             // The solver's numbers (contact_solver.cpp: ContactSolver::prepare, warmStart,
-            // ContactSolver::iterate), accumulated over the iterations.
+            // ContactSolver::solve), accumulated over the iterations.
             record(ctx.trace, q::manifold_normal_velocity, m.a, p.normalVelocity, i);
-            const QuantityInfo& target = w.settings.positionFix == PositionFix::Baumgarte
-                                             ? q::target_normal_velocity_baumgarte
-                                             : q::target_normal_velocity;
-            record(ctx.trace, target, m.a, p.v_target, i);
+            if (!soft) {
+                const QuantityInfo& target = w.settings.positionFix == PositionFix::Baumgarte
+                                                 ? q::target_normal_velocity_baumgarte
+                                                 : q::target_normal_velocity;
+                record(ctx.trace, target, m.a, p.v_target, i);
+            }
             record(ctx.trace, q::normal_mass, m.a, p.m_n, i);
             record(ctx.trace, q::warm_start_normal, m.a, p.warm_n, i);
             record(ctx.trace, q::warm_start_tangent, m.a, p.warm_t_W, i);
-            record(ctx.trace, q::normal_impulse, m.a, p.lambda_n, i);
+            record(ctx.trace, soft ? q::soft_normal_impulse : q::normal_impulse, m.a, p.lambda_n, i);
+            if (soft) record(ctx.trace, q::step_normal_impulse, m.a, p.P_n, i);
             // lambda_t = lambda_t1 t1 + lambda_t2 t2
             const Vec3 lambda_t_W = p.lambda_t1 * m.t1_W + p.lambda_t2 * m.t2_W;
             record(ctx.trace, q::tangent_impulse, m.a, lambda_t_W, i);

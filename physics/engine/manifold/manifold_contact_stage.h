@@ -3,7 +3,7 @@
 // tree finds the pairs; each pair with an awake movable body gets its manifold (box-box
 // face clipping, box-plane corners), warm-started from last step's impulses; the
 // sequential-impulse solver runs up to solver_iterations iterations on the free
-// velocities v + h F/M; the impulses it found go to the integrator as contact loads
+// velocities v + h F/M (or the soft step runs its substeps from v, soft_step_solver.h); the impulses it found go to the integrator as contact loads
 // F_c = P/h, q_c = L_c/h, and a sleeping body gets F_c = -F, q_c = -q, so it stays put.
 #pragma once
 
@@ -29,6 +29,8 @@ private:
     void findManifolds(StepContext& ctx);
     bool collidePair(StepContext& ctx, int a, int b);
     void solve(StepContext& ctx);
+    void solveSequentialImpulses(StepContext& ctx);
+    void solveSoftStep(StepContext& ctx);
     void recordPoints(StepContext& ctx) const;
 
     std::shared_ptr<ContactScratch> world_;

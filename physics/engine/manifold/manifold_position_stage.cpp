@@ -21,11 +21,37 @@ double deepestOverlap(const std::vector<Manifold>& manifolds, const std::vector<
     return deepest;
 }
 
+void ManifoldPositionStage::pushOut(StepContext& ctx)
+{
+    const ContactScratch& w = *world_;
+    const double h = ctx.scene.dt;
+    const int n = static_cast<int>(ctx.states.size());
+    for (int b = 0; b < n && b < static_cast<int>(w.motion.size()); ++b) {
+        if (!ctx.movable[static_cast<std::size_t>(b)]) continue;
+        const SubstepMotion& m = w.motion[static_cast<std::size_t>(b)];
+        if (m.dx_W == Vec3::Zero() && m.dtheta_W == Vec3::Zero()) continue;   // not moved by the soft step
+        BodyState& s = ctx.states[static_cast<std::size_t>(b)];
+        // The integration moved the body with v_{n+1}, omega_{n+1}; the substeps moved it
+        // by dx, dtheta. The rest is the push-out: dx_s = dx - h v_{n+1}, dtheta_s = dtheta - h omega_{n+1}
+        const Vec3 dx_s_W = m.dx_W - h * s.v_W;
+        const Vec3 dtheta_s_W = m.dtheta_W - h * s.omega_W;
+        s.x_W += dx_s_W;
+        record(ctx.trace, q::soft_push_out, b, dx_s_W);
+        if (ctx.scene.bodies[static_cast<std::size_t>(b)].angularResponse && dtheta_s_W != Vec3::Zero()) {
+            rotateBy(s, dtheta_s_W);
+        }
+        // R, I^-1 and omega = I^-1 L from the corrected orientation (L unchanged)
+        updateDerived(ctx.mass[static_cast<std::size_t>(b)], s, ctx.conventions[static_cast<std::size_t>(b)]);
+    }
+}
+
 void ManifoldPositionStage::run(StepContext& ctx)
 {
     ContactScratch& w = *world_;
     const int n = static_cast<int>(ctx.states.size());
-    if (w.settings.positionFix == PositionFix::Ngs && !w.manifolds.empty()) {
+    if (w.settings.solver == ManifoldSolver::SoftStep) {
+        pushOut(ctx);
+    } else if (w.settings.positionFix == PositionFix::Ngs && !w.manifolds.empty()) {
         dx_W_.assign(static_cast<std::size_t>(n), Vec3::Zero());
         moved_.assign(static_cast<std::size_t>(n), 0);
         angular_.resize(static_cast<std::size_t>(n));

@@ -3,7 +3,9 @@
 // step's manifold points (positionIterations, stopping once no point is deeper than the
 // slop) move x and r of the overlapping bodies apart, leaving `slop`
 // of overlap, and never touch v or L, so they add no kinetic energy (Box2D's
-// SolvePositionConstraints). With "baumgarte" or "none" nothing moves here. With a
+// SolvePositionConstraints). With "baumgarte" or "none" nothing moves here. With the
+// soft step ("solver": "soft-step") the push-out its substeps made is added instead
+// (soft_step_solver.h): dx_s = sum h_s v_i - h v_{n+1}, the same for the rotation. With a
 // trace it records each moved body's total correction and the deepest overlap left.
 #pragma once
 
@@ -22,6 +24,8 @@ public:
     void run(StepContext& ctx) override;
 
 private:
+    // The soft step's push-out: what its substeps moved beyond h v_{n+1}, h omega_{n+1}.
+    void pushOut(StepContext& ctx);
     std::shared_ptr<ContactScratch> world_;
     NgsSolver ngs_;               // this step's manifolds as the iterations read them
     std::vector<Vec3> dx_W_;      // per body: its correction in this step

@@ -2,6 +2,8 @@
 // sources in position_fix.h.
 #include "physics/engine/manifold/position_fix.h"
 
+#include "physics/engine/manifold/contact_axis.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -21,8 +23,10 @@ Vec3 currentNormal(ReferenceSide reference, const Vec3& nRef_R, const BodyState&
     return nRef_R;
 }
 
+} // namespace
+
 // r <- (r + 1/2 (0, theta) r) / |.|, and R = R(r): a small rotation by theta.
-void rotate(BodyState& s, const Vec3& theta_W)
+void rotateBy(BodyState& s, const Vec3& theta_W)
 {
     const Quat dq(0.0, theta_W.x(), theta_W.y(), theta_W.z());
     const Quat rate = dq * s.q_WB;
@@ -31,8 +35,6 @@ void rotate(BodyState& s, const Vec3& theta_W)
     s.q_WB.coeffs() *= 1.0 / s.q_WB.coeffs().norm();
     s.R_WB = s.q_WB.toRotationMatrix();
 }
-
-} // namespace
 
 double currentSeparation(const Manifold& m, int k, const BodyState& A, const BodyState* B)
 {
@@ -90,10 +92,8 @@ double NgsSolver::iterate(std::vector<BodyState>& states, const ManifoldSettings
             const Vec3 mid_W = 0.5 * (pA_W + pB_W);
             const Vec3 r_A_W = mid_W - A.x_W;
             const Vec3 r_B_W = row.b >= 0 ? Vec3(mid_W - B.x_W) : Vec3::Zero();
-            const Vec3 rAxn_W = r_A_W.cross(n_W);
-            const Vec3 rBxn_W = r_B_W.cross(n_W);
             // K = 1/M_A + 1/M_B + (r_A x n) . I_A^-1 (r_A x n) + (r_B x n) . I_B^-1 (r_B x n)
-            const double K = row.invMA + row.invMB + rAxn_W.dot(IinvA_W * rAxn_W) + rBxn_W.dot(IinvB_W * rBxn_W);
+            const double K = ContactAxis(r_A_W, r_B_W, n_W, IinvA_W, IinvB_W).inverseMass(row.invMA + row.invMB);
             if (K <= 0.0) continue;
             // P = -C / K along n
             const Vec3 P_W = (-C / K) * n_W;
@@ -101,12 +101,12 @@ double NgsSolver::iterate(std::vector<BodyState>& states, const ManifoldSettings
             const Vec3 dxA = row.invMA * P_W;
             A.x_W += dxA;
             dxA_W += dxA;
-            if (row.angularA) rotate(A, IinvA_W * r_A_W.cross(P_W));
+            if (row.angularA) rotateBy(A, IinvA_W * r_A_W.cross(P_W));
             if (row.b >= 0) {
                 const Vec3 dxB = -row.invMB * P_W;
                 B.x_W += dxB;
                 dxB_W += dxB;
-                if (row.angularB) rotate(B, -(IinvB_W * r_B_W.cross(P_W)));
+                if (row.angularB) rotateBy(B, -(IinvB_W * r_B_W.cross(P_W)));
             }
         }
         dx_W[static_cast<std::size_t>(row.a)] += dxA_W;

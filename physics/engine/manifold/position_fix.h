@@ -47,6 +47,9 @@ private:
     std::vector<Anchors> anchors_;
 };
 
+// A small rotation by theta (NGS, the soft step's push-out): r <- (r + 1/2 (0, theta) r) / |.|, R = R(r).
+void rotateBy(BodyState& s, const Vec3& theta_W);
+
 // The separation of point k of m at the bodies' current poses: s = n . (pA - pB).
 double currentSeparation(const Manifold& m, int k, const BodyState& A, const BodyState* B);
 

@@ -6,10 +6,13 @@ namespace rbw {
 
 ManifoldSettings manifoldSettings(const SceneDef& scene)
 {
+    // The defaults are ManifoldSettings' own (settings.h); a scene's key replaces one.
     ManifoldSettings s;
-    s.iterations = scene.solverIterationsOr();
-    s.sleep = scene.sleepOr();
-    s.positionFix = scene.positionFixOr();
+    if (scene.solverIterations) s.iterations = static_cast<int>(*scene.solverIterations);
+    if (scene.sleep) s.sleep = *scene.sleep;
+    if (scene.positionFix) s.positionFix = *scene.positionFix;
+    if (scene.solver) s.solver = *scene.solver;
+    if (scene.substeps) s.substeps = static_cast<int>(*scene.substeps);
     return s;
 }
 
@@ -27,6 +30,8 @@ void checkContactModel(std::vector<SceneIssue>& out, const SceneDef& scene)
         if (scene.solverIterations) out.push_back({"solver_iterations", std::string("the key") + hint});
         if (scene.sleep) out.push_back({"sleep", std::string("the key") + hint});
         if (scene.positionFix) out.push_back({"position_fix", std::string("the key") + hint});
+        if (scene.solver) out.push_back({"solver", std::string("the key") + hint});
+        if (scene.substeps) out.push_back({"substeps", std::string("the key") + hint});
         return;
     }
     if (scene.solverIterations && !(*scene.solverIterations >= 1 && *scene.solverIterations <= 1000)) {
@@ -36,6 +41,27 @@ void checkContactModel(std::vector<SceneIssue>& out, const SceneDef& scene)
     if (scene.positionFix && *scene.positionFix != PositionFix::Ngs && *scene.positionFix != PositionFix::Baumgarte &&
         *scene.positionFix != PositionFix::None) {
         out.push_back({"position_fix", "must be \"ngs\", \"baumgarte\" or \"none\""});
+    }
+    if (scene.solver && *scene.solver != ManifoldSolver::SequentialImpulses && *scene.solver != ManifoldSolver::SoftStep) {
+        out.push_back({"solver", "must be \"sequential-impulses\" or \"soft-step\""});
+    }
+    const bool softStep = scene.solver && *scene.solver == ManifoldSolver::SoftStep;
+    if (softStep) {
+        // The soft step has its own iterations (one solve and one relax per substep) and
+        // its own position correction (the push-out inside the substeps).
+        if (scene.solverIterations) {
+            out.push_back({"solver_iterations", "belongs to the sequential impulses; the soft step iterates once per "
+                                                "substep (\"substeps\")"});
+        }
+        if (scene.positionFix) {
+            out.push_back({"position_fix", "belongs to the sequential impulses; the soft step pushes overlap out "
+                                           "inside its substeps"});
+        }
+    } else if (scene.substeps) {
+        out.push_back({"substeps", "belongs to the soft step; add \"solver\": \"soft-step\""});
+    }
+    if (scene.substeps && !(*scene.substeps >= 1 && *scene.substeps <= 64)) {
+        out.push_back({"substeps", "must be a whole number from 1 to 64, got " + std::to_string(*scene.substeps)});
     }
     if (scene.positionCorrection) {
         out.push_back({"position_correction", "belongs to the course model; the manifold model fixes positions "

@@ -23,6 +23,12 @@
 //   maxPoints          points kept per box-box manifold (reduceManifold; 8: all)
 //   timeToSleep        an island sleeps when all its bodies rested this long
 //                      (b2_timeToSleep)                                              [s]
+//   solver             sequential impulses (contact_solver.h) or the soft step
+//                      (soft_step_solver.h)                                          [-]
+//   substeps           the soft step's substeps per step                             [-]
+//   contactHertz, contactDampingRatio   the soft contacts' spring: frequency and
+//                      damping ratio (Box2D contactHertz, contactDampingRatio)      [Hz], [-]
+//   maxPushOut         the soft contacts' fastest push-out (Box2D contactSpeed)      [m/s]
 #pragma once
 
 #include "physics/engine/scene.h"
@@ -47,6 +53,13 @@ struct ManifoldSettings {
     double sleepLinear = 0.01;
     double sleepAngular = 2.0 * 3.14159265358979323846 / 180.0;
     double timeToSleep = 0.5;
+    // The soft step (soft_step_solver.h; Box2D v3 b2DefaultWorldDef: contactHertz 30,
+    // contactDampingRatio 10, contactSpeed 3 m/s, 4 substeps)
+    ManifoldSolver solver = ManifoldSolver::SequentialImpulses;
+    int substeps = 4;
+    double contactHertz = 30.0;          // [Hz], capped at 1 / (8 h_s)
+    double contactDampingRatio = 10.0;   // [-]
+    double maxPushOut = 3.0;             // [m/s]: the fastest a soft contact pushes overlap out
 };
 
 // The scene's choices, the rest at their defaults.

@@ -1,5 +1,7 @@
 #include "physics/workbook/lab/contact_study.h"
 
+#include "physics/engine/manifold/settings.h"
+#include "physics/engine/scene_words.h"
 #include "physics/engine/world.h"
 
 #include <algorithm>
@@ -16,8 +18,8 @@ std::string ContactStudyRow::statusText() const
 std::vector<SceneIssue> validateContactStudy(const ContactStudyConfig& config)
 {
     std::vector<SceneIssue> issues;
-    if (!config.course && config.iterations.empty()) {
-        issues.push_back({"iterations", "no model to run: give solver iterations or keep the course model"});
+    if (!config.course && !config.softStep && config.iterations.empty()) {
+        issues.push_back({"iterations", "no model to run: give solver iterations or keep the course model or the soft step"});
     }
     for (const int it : config.iterations) {
         if (it < 1 || it > 1000) {
@@ -43,7 +45,9 @@ std::vector<SceneIssue> validateContactStudy(const ContactStudyConfig& config)
 
 namespace {
 
-ContactStudyRow runOne(const ContactStudyConfig& config, ContactModel model, int iterations, double h,
+// iterations: the sequential impulses' solver iterations; 0 with the course model and
+// the soft step (which runs its default substeps)
+ContactStudyRow runOne(const ContactStudyConfig& config, ContactModel model, bool softStep, int iterations, double h,
                        const std::atomic<bool>* cancel)
 {
     SceneDef scene = contactProblemScene(config.problem, model, config.rainBoxes);
@@ -51,11 +55,16 @@ ContactStudyRow runOne(const ContactStudyConfig& config, ContactModel model, int
     // N = T/h, to the nearest step (T = 10, h = 1/60 gives 600)
     const long steps = std::max(1L, std::lround(config.tEnd / h));
     scene.steps = steps;
-    if (model == ContactModel::Manifold) scene.solverIterations = iterations;
+    if (softStep) {
+        scene.solver = ManifoldSolver::SoftStep;
+    } else if (model == ContactModel::Manifold) {
+        scene.solverIterations = iterations;
+    }
 
     ContactStudyRow row;
-    row.model = model == ContactModel::Course ? "course" : "manifold";
-    row.iterations = model == ContactModel::Course ? 0 : iterations;
+    // the soft step by its scene word (scene_words.h), "soft-step"
+    row.model = model == ContactModel::Course ? "course" : (softStep ? std::string(sceneWord(ManifoldSolver::SoftStep)) : "manifold");
+    row.iterations = model == ContactModel::Course ? 0 : (softStep ? manifoldSettings(scene).substeps : iterations);
     row.dt = h;
     row.steps = steps;
     row.tEnd = double(steps) * h;
@@ -107,15 +116,19 @@ ContactStudyResult runContactStudy(const ContactStudyConfig& config, const Study
     result.problem = contactProblemName(config.problem);
     struct Run {
         ContactModel model;
+        bool softStep;
         int iterations;
         double h;
     };
     std::vector<Run> runs;
     if (config.course) {
-        for (const double h : config.dts) runs.push_back({ContactModel::Course, 0, h});
+        for (const double h : config.dts) runs.push_back({ContactModel::Course, false, 0, h});
+    }
+    if (config.softStep) {
+        for (const double h : config.dts) runs.push_back({ContactModel::Manifold, true, 0, h});
     }
     for (const int it : config.iterations) {
-        for (const double h : config.dts) runs.push_back({ContactModel::Manifold, it, h});
+        for (const double h : config.dts) runs.push_back({ContactModel::Manifold, false, it, h});
     }
     result.runsPlanned = static_cast<int>(runs.size());
     for (const Run& r : runs) {
@@ -123,7 +136,7 @@ ContactStudyResult runContactStudy(const ContactStudyConfig& config, const Study
             result.cancelled = true;
             break;
         }
-        result.rows.push_back(runOne(config, r.model, r.iterations, r.h, cancel));
+        result.rows.push_back(runOne(config, r.model, r.softStep, r.iterations, r.h, cancel));
         if (progress) progress(static_cast<int>(result.rows.size()), result.runsPlanned);
     }
     return result;

@@ -1,6 +1,8 @@
 // The speed/accuracy trade of contacts (issue 11, docs/accuracy-lab.md): one contact
-// problem (contact_problems.h) in the course model and in the manifold model at each
-// chosen solver iteration count, at each chosen step size h, from t = 0 to T. For each
+// problem (contact_problems.h) in the course model, in the manifold model's soft step
+// (soft_step_solver.h, at its default substeps) and in the manifold model's sequential
+// impulses at each chosen solver iteration count: three solvers, at each chosen step
+// size h, from t = 0 to T. For each
 // run it reports what the contacts got wrong against what the run cost:
 //   overlap   the deepest box-box overlap over the run (measured after every step)  [m]
 //   below     the deepest corner below the ground over the run                      [m]
@@ -27,14 +29,15 @@ struct ContactStudyConfig {
     ContactProblem problem = ContactProblem::RestingBox;
     int rainBoxes = 100;
     bool course = true;                      // also run the course model (once per h)
+    bool softStep = true;                    // also run the manifold model's soft step (once per h, its default substeps)
     std::vector<int> iterations{1, 2, 4, 8, 16};   // the manifold model's solver iterations
     std::vector<double> dts{1.0 / 30.0, 1.0 / 60.0, 1.0 / 120.0};
     double tEnd = 10.0;                      // T [s]
 };
 
 struct ContactStudyRow {
-    std::string model;    // "course" or "manifold"
-    int iterations = 0;   // solver iterations (manifold); 0 for the course model
+    std::string model;    // "course", "manifold" (sequential impulses) or "soft-step" (the manifold model's soft step)
+    int iterations = 0;   // solver iterations (manifold), substeps (soft step); 0 for the course model
     double dt = 0.0;
     long steps = 0;       // N = round(T/h); for a blown-up run, the steps it took before
     double tEnd = 0.0;
@@ -56,7 +59,7 @@ struct ContactStudyResult {
     std::string problem;
     int runsPlanned = 0;
     bool cancelled = false;
-    std::vector<ContactStudyRow> rows;   // course first, then the manifold by iterations; each by h
+    std::vector<ContactStudyRow> rows;   // course first, then the soft step, then the manifold by iterations; each by h
 };
 
 // What is wrong with a configuration: no model to run, iterations < 1, h not > 0 or

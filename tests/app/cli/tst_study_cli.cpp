@@ -158,19 +158,21 @@ void TestStudyCli::contactStudyCsv()
                            "--t-end", "1"});
     QCOMPARE(r.exitCode, 0);
     const QList<QStringList> rows = parseCsv(r.out);
-    QCOMPARE(rows.size(), 4);
+    QCOMPARE(rows.size(), 5);
     QCOMPARE(rows[0].join(','), QStringLiteral("problem,model,iterations,dt,steps,t_end,deepest_overlap,deepest_below,"
                                                "drift,energy_gained,kinetic_energy_end,moving_end,ns_per_step,status"));
     QCOMPARE(rows[1].mid(0, 6), (QStringList{"resting-box", "course", "", "0.016666666666666666", "60", "1"}));
-    QCOMPARE(rows[2].mid(0, 3), (QStringList{"resting-box", "manifold", "1"}));
-    QCOMPARE(rows[3].mid(0, 3), (QStringList{"resting-box", "manifold", "4"}));
-    for (int i = 1; i < 4; ++i) {
+    // the soft step at its default 4 substeps, then the sequential impulses by iterations
+    QCOMPARE(rows[2].mid(0, 3), (QStringList{"resting-box", "soft-step", "4"}));
+    QCOMPARE(rows[3].mid(0, 3), (QStringList{"resting-box", "manifold", "1"}));
+    QCOMPARE(rows[4].mid(0, 3), (QStringList{"resting-box", "manifold", "4"}));
+    for (int i = 1; i < 5; ++i) {
         QCOMPARE(rows[i].size(), 14);
         QCOMPARE(rows[i].last(), QStringLiteral("ok"));
         QVERIFY(!rows[i][8].isEmpty());   // a resting box has a drift
         QVERIFY(!r.out.contains("nan") && !r.out.contains("inf"));
     }
-    QVERIFY(r.err.contains("rbw: contact-study: 3/3 runs"));
+    QVERIFY(r.err.contains("rbw: contact-study: 4/4 runs"));
 }
 
 QTEST_MAIN(TestStudyCli)

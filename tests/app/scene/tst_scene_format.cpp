@@ -255,6 +255,8 @@ void TestSceneFormat::tableIsConsistent()
     QCOMPARE(fromWord<ContactModel>(word(ContactModel::Manifold)), ContactModel::Manifold);
     QCOMPARE(fromWord<PositionFix>(word(PositionFix::None)), PositionFix::None);
     QCOMPARE(fromWord<PositionFix>(word(PositionFix::Ngs)), PositionFix::Ngs);
+    QCOMPARE(fromWord<ManifoldSolver>(word(ManifoldSolver::SoftStep)), ManifoldSolver::SoftStep);
+    QCOMPARE(fromWord<ManifoldSolver>(word(ManifoldSolver::SequentialImpulses)), ManifoldSolver::SequentialImpulses);
     QVERIFY(!fromWord<ContactModel>(QStringLiteral("Course")).has_value());
     QCOMPARE(choiceText({"a", "b"}), QStringLiteral("\"a\" or \"b\""));
     QCOMPARE(choiceText({"a", "b", "c"}, "(default)"), QStringLiteral("\"a\", \"b\", \"c\" or (default)"));
@@ -294,8 +296,8 @@ void TestSceneFormat::tamperedSchemaDiffers_data()
         });
     }) << "body.angular_response: in the table, not in the schema";
     QTest::newRow("extra top-level key") << Edit([=](QJsonObject& s) {
-        prop(s, "substeps", [](QJsonObject& p) { p.insert("type", "integer"); });
-    }) << "top level.substeps: in the schema, not in the table";
+        prop(s, "relax_passes", [](QJsonObject& p) { p.insert("type", "integer"); });
+    }) << "top level.relax_passes: in the schema, not in the table";
     QTest::newRow("extra word") << Edit([=](QJsonObject& s) {
         prop(s, "contact_model", [](QJsonObject& p) { p.insert("enum", QJsonArray{"course", "manifold", "soft"}); });
     }) << "top level.contact_model: words {course, manifold, soft} in the schema, {course, manifold} in the table";

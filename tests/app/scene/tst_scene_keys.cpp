@@ -93,7 +93,7 @@ QSet<QString> sceneLiterals()
     QSet<QString> literals;
     for (const KeyRow& r : rows()) literals.insert(QString::fromLatin1(r.name));
     for (Choices c : {Choices::Integrator, Choices::InertiaConvention, Choices::PlaneContacts, Choices::ContactModel,
-                      Choices::PositionFix}) {
+                      Choices::PositionFix, Choices::ManifoldSolver}) {
         for (const QString& w : words(c)) literals.insert(w);
     }
     return literals;

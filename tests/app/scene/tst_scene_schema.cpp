@@ -215,7 +215,8 @@ void TestSceneSchema::schemaIsWithinTheSubset()
     for (const char* k : {"name", "description", "dt", "steps", "integrator", "inertia_convention", "gravity", "bodies",
                           "forces", "torques", "push", "probes", "planes", "box_collisions", "restitution",
                           "restitution_threshold", "friction", "pairs", "position_correction", "plane_contacts",
-                          "energy_jump", "contact_model", "solver_iterations", "sleep", "position_fix"}) {
+                          "energy_jump", "contact_model", "solver_iterations", "sleep", "position_fix", "solver",
+                          "substeps"}) {
         QVERIFY2(keys.contains(QLatin1String(k)), k);
     }
 }

@@ -130,6 +130,7 @@ private slots:
         s.solverIterations = 7;
         s.sleep = false;
         s.positionFix = PositionFix::Baumgarte;
+        s.solver = ManifoldSolver::SequentialImpulses;   // given, though the default
         const std::vector<SceneIssue> issues = validate(s);
         QVERIFY2(issues.empty(), issues.empty() ? "" : issues.front().reason.c_str());
         QStringList errors;
@@ -152,6 +153,8 @@ private slots:
         QTest::newRow("dt") << 5 << "dt";
         QTest::newRow("a body more") << 6 << "bodies";
         QTest::newRow("solver iterations given") << 7 << "solver_iterations";
+        QTest::newRow("solver given") << 8 << "solver";
+        QTest::newRow("substeps given") << 9 << "substeps";
     }
     void differencesAreSeen()
     {
@@ -168,6 +171,8 @@ private slots:
         case 5: b.dt = 1.0; break;
         case 6: b.bodies.push_back(a.bodies[0]); break;
         case 7: b.solverIterations = 10; break;   // the default's value, but given
+        case 8: b.solver = ManifoldSolver::SoftStep; break;
+        case 9: b.substeps = 4; break;   // the default's value, but given
         }
         const QStringList diff = sceneDifferences(a, b);
         QCOMPARE(diff.size(), 1);

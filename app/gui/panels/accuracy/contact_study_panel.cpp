@@ -4,6 +4,7 @@
 #include "app/output/atomic_file.h"
 #include "app/output/study_csv.h"
 #include "app/gui/panels/accuracy/log_axes.h"
+#include "physics/engine/scene_words.h"
 
 #include <QChart>
 #include <QChartView>
@@ -61,6 +62,7 @@ std::optional<double> metricOf(const lab::ContactStudyRow& row, ContactMetric m)
 
 QString seriesName(const lab::ContactStudyRow& row)
 {
+    if (row.model == sceneWord(ManifoldSolver::SoftStep)) return QObject::tr("soft step, %1 substeps").arg(row.iterations);
     return row.model == "course" ? QObject::tr("course") : QObject::tr("manifold ×%1").arg(row.iterations);
 }
 

@@ -93,6 +93,8 @@ QVariant SceneEditorModel::valueOf(int group, int element, const Field& field, i
         if (k == K::SolverIterations) return s.solverIterations ? QString::number(*s.solverIterations) : (display ? kDefault : QString());
         if (k == K::Sleep) return s.sleep ? (*s.sleep ? kTrue : kFalse) : kDefault;
         if (k == K::PositionFix) return s.positionFix ? sceneformat::word(*s.positionFix) : kDefault;
+        if (k == K::Solver) return s.solver ? sceneformat::word(*s.solver) : kDefault;
+        if (k == K::Substeps) return s.substeps ? QString::number(*s.substeps) : (display ? kDefault : QString());
         break;
     case Bodies: {
         const BodyDef& b = s.bodies[element];
@@ -221,6 +223,22 @@ bool SceneEditorModel::setValue(int group, int element, const Field& field, cons
             PositionFix fix = PositionFix::Ngs;
             if (!readWord(text, sceneformat::Choices::PositionFix, &fix, error, kDefault)) return false;
             s.positionFix = fix;
+            return true;
+        }
+        if (k == K::Solver) {
+            if (text == kDefault) {
+                s.solver.reset();
+                return true;
+            }
+            ManifoldSolver solver = ManifoldSolver::SequentialImpulses;
+            if (!readWord(text, sceneformat::Choices::ManifoldSolver, &solver, error, kDefault)) return false;
+            s.solver = solver;
+            return true;
+        }
+        if (k == K::Substeps) {
+            if (text.trimmed().isEmpty() || text.trimmed() == kDefault) { s.substeps.reset(); return true; }
+            if (!parseWhole(text, &n, error)) return false;
+            s.substeps = n;
             return true;
         }
         break;

@@ -5,6 +5,7 @@
 #include "tests/test_support.h"
 
 #include "app/scene/scene_loader.h"
+#include "physics/engine/manifold/settings.h"
 #include "physics/engine/world.h"
 
 #include <QJsonArray>
@@ -40,17 +41,28 @@ private slots:
             rbw::parseScene(sceneJson(QStringLiteral(R"("contact_model": "manifold",)")), QStringLiteral("s.json"));
         QVERIFY(manifold.ok());
         QCOMPARE(manifold.scene->contactModel, rbw::ContactModel::Manifold);
-        QCOMPARE(manifold.scene->solverIterationsOr(), 10);
-        QCOMPARE(manifold.scene->sleepOr(), true);
-        QCOMPARE(manifold.scene->positionFixOr(), rbw::PositionFix::Ngs);
+        // Unset keys: ManifoldSettings' defaults, the model's one set of them (settings.h)
+        const rbw::ManifoldSettings defaults = rbw::manifoldSettings(*manifold.scene);
+        QCOMPARE(defaults.iterations, 10);
+        QCOMPARE(defaults.sleep, true);
+        QCOMPARE(defaults.positionFix, rbw::PositionFix::Ngs);
         const rbw::SceneLoadResult set = rbw::parseScene(
             sceneJson(QStringLiteral(
                 R"("contact_model": "manifold", "solver_iterations": 25, "sleep": false, "position_fix": "baumgarte",)")),
             QStringLiteral("s.json"));
         QVERIFY(set.ok());
-        QCOMPARE(set.scene->solverIterationsOr(), 25);
-        QCOMPARE(set.scene->sleepOr(), false);
-        QCOMPARE(set.scene->positionFixOr(), rbw::PositionFix::Baumgarte);
+        const rbw::ManifoldSettings chosen = rbw::manifoldSettings(*set.scene);
+        QCOMPARE(chosen.iterations, 25);
+        QCOMPARE(chosen.sleep, false);
+        QCOMPARE(chosen.positionFix, rbw::PositionFix::Baumgarte);
+        QCOMPARE(defaults.solver, rbw::ManifoldSolver::SequentialImpulses);
+        QCOMPARE(defaults.substeps, 4);
+        const rbw::SceneLoadResult soft = rbw::parseScene(
+            sceneJson(QStringLiteral(R"("contact_model": "manifold", "solver": "soft-step", "substeps": 6,)")),
+            QStringLiteral("s.json"));
+        QVERIFY(soft.ok());
+        QCOMPARE(rbw::manifoldSettings(*soft.scene).solver, rbw::ManifoldSolver::SoftStep);
+        QCOMPARE(rbw::manifoldSettings(*soft.scene).substeps, 6);
     }
 
     // Each bad value is refused with its field and reason, through the real rbw (exit 2).
@@ -82,6 +94,17 @@ private slots:
             << R"("contact_model": "manifold", "plane_contacts": "average",)"
             << "plane_contacts: belongs to the course model; the manifold model keeps every corner below a plane as a "
                "point of its manifold";
+        QTest::newRow("unknown solver") << R"("contact_model": "manifold", "solver": "soft",)"
+                                        << R"(solver: must be "sequential-impulses" or "soft-step", got "soft")";
+        QTest::newRow("substeps 0") << R"("contact_model": "manifold", "solver": "soft-step", "substeps": 0,)"
+                                    << "substeps: must be a whole number from 1 to 64, got 0";
+        QTest::newRow("substeps without the soft step") << R"("contact_model": "manifold", "substeps": 4,)"
+                                                        << R"(substeps: belongs to the soft step; add "solver": "soft-step")";
+        QTest::newRow("position fix with the soft step")
+            << R"("contact_model": "manifold", "solver": "soft-step", "position_fix": "ngs",)"
+            << "position_fix: belongs to the sequential impulses; the soft step pushes overlap out inside its substeps";
+        QTest::newRow("solver in the course model") << R"("solver": "soft-step",)"
+            << R"(solver: the key belongs to the manifold model; add "contact_model": "manifold" or leave it out)";
         QTest::newRow("misspelt key") << R"("contact_modle": "manifold",)"
                                       << R"(contact_modle: unknown key (did you mean "contact_model"?))";
     }

@@ -108,10 +108,20 @@ private slots:
     // overlap; the position fix's slop is 5 mm). Non-vacuous: after 40 steps (t = 2/3 s,
     // before the lowest corners, about 2.2 m up, reach the ground) every box falls at
     // g t = 6.5 m/s: KE = 100 * 1/2 * 1 kg * (6.54 m/s)^2 = 2.1 kJ > 1 kJ.
+    // Both solvers of the manifold model: the sequential impulses and the soft step.
+    void rainRestsUnderExplicitEuler_data()
+    {
+        QTest::addColumn<bool>("soft");
+        QTest::newRow("sequential impulses") << false;
+        QTest::newRow("soft step") << true;
+    }
+
     void rainRestsUnderExplicitEuler()
     {
+        QFETCH(bool, soft);
         SceneDef s = lab::contactProblemScene(lab::ContactProblem::Rain, ContactModel::Manifold, 100);
         s.integrator = "explicit-euler";
+        if (soft) s.solver = ManifoldSolver::SoftStep;
         World w(s);
         for (int k = 0; k < 600; ++k) {
             QVERIFY(w.step().ok);

@@ -140,6 +140,12 @@ SceneDef sceneOf(const QString& which)
         // 100 unit boxes falling in one 10 x 10 layer from 3 m (contact_problems.h), sleeping on
         return lab::contactProblemScene(lab::ContactProblem::Rain, ContactModel::Manifold, 100);
     }
+    if (which == QLatin1String("soft rain")) {
+        // the same with the soft step: it carries its last substep's impulses to the next step
+        SceneDef s = lab::contactProblemScene(lab::ContactProblem::Rain, ContactModel::Manifold, 100);
+        s.solver = ManifoldSolver::SoftStep;
+        return s;
+    }
     return test::lessonScene(which);
 }
 
@@ -177,6 +183,8 @@ private slots:
         QTest::newRow("rain 100, step 50") << "rain" << 50;
         QTest::newRow("rain 100, step 80") << "rain" << 80;
         QTest::newRow("rain 100, step 150") << "rain" << 150;
+        QTest::newRow("soft-step rain 100, step 50") << "soft rain" << 50;
+        QTest::newRow("soft-step rain 100, step 150") << "soft rain" << 150;
         QTest::newRow("control: lesson 4, course model, step 400") << "04-many-boxes/scene.json" << 400;
     }
 

@@ -125,7 +125,7 @@ void TestContactStudy::validation()
     QVERIFY(validateContactStudy(c).empty());   // the defaults run
     switch (which) {
     case 0: c.iterations = {4, 0}; break;
-    case 1: c.iterations.clear(); c.course = false; break;
+    case 1: c.iterations.clear(); c.course = false; c.softStep = false; break;
     case 2: c.dts = {0.01, -0.01}; break;
     case 3: c.dts = {1e-9}; break;
     case 4: c.tEnd = 0.0; break;
@@ -147,17 +147,18 @@ void TestContactStudy::rowsInOrder()
     int calls = 0;
     const ContactStudyResult r = runContactStudy(c, [&calls](int done, int total) {
         ++calls;
-        QCOMPARE(total, 6);
+        QCOMPARE(total, 8);
         QCOMPARE(done, calls);
     });
-    QCOMPARE(r.runsPlanned, 6);
-    QCOMPARE(r.rows.size(), size_t(6));
-    QCOMPARE(calls, 6);
-    // course at each h, then the manifold by iterations, each at each h
-    const char* models[] = {"course", "course", "manifold", "manifold", "manifold", "manifold"};
-    const int iterations[] = {0, 0, 1, 1, 4, 4};
-    const long steps[] = {30, 15, 30, 15, 30, 15};   // T/h = 0.5 * 60, 0.5 * 30
-    for (int i = 0; i < 6; ++i) {
+    QCOMPARE(r.runsPlanned, 8);
+    QCOMPARE(r.rows.size(), size_t(8));
+    QCOMPARE(calls, 8);
+    // course at each h, the soft step (its 4 substeps) at each h, then the sequential
+    // impulses by iterations, each at each h: three solvers
+    const char* models[] = {"course", "course", "soft-step", "soft-step", "manifold", "manifold", "manifold", "manifold"};
+    const int iterations[] = {0, 0, 4, 4, 1, 1, 4, 4};
+    const long steps[] = {30, 15, 30, 15, 30, 15, 30, 15};   // T/h = 0.5 * 60, 0.5 * 30
+    for (int i = 0; i < 8; ++i) {
         QCOMPARE(QString::fromStdString(r.rows[i].model), QString::fromLatin1(models[i]));
         QCOMPARE(r.rows[i].iterations, iterations[i]);
         QCOMPARE(r.rows[i].steps, steps[i]);
@@ -184,12 +185,17 @@ void TestContactStudy::restingBoxCourseSlidesManifoldHolds()
     c.dts = {1.0 / 60.0};
     c.tEnd = 2.0;
     const ContactStudyResult r = runContactStudy(c);
-    QCOMPARE(r.rows.size(), size_t(2));
+    QCOMPARE(r.rows.size(), size_t(3));
     const ContactStudyRow& course = r.rows[0];
-    const ContactStudyRow& manifold = r.rows[1];
+    const ContactStudyRow& soft = r.rows[1];
+    const ContactStudyRow& manifold = r.rows[2];
+    QCOMPARE(QString::fromStdString(soft.model), QStringLiteral("soft-step"));
+    // The soft step holds it too: within 1 mm, no energy above the same 10 micrometre lift
+    QVERIFY2(*soft.drift < 1e-3, qPrintable(QString::number(*soft.drift)));
     QVERIFY2(*manifold.drift < 1e-3, qPrintable(QString::number(*manifold.drift)));
     const double lift = 1.0 * 9.81 * 1e-5;
     QVERIFY2(manifold.energyGained < lift, qPrintable(QString::number(manifold.energyGained)));
+    QVERIFY2(soft.energyGained < lift, qPrintable(QString::number(soft.energyGained)));
     QVERIFY2(*course.drift > 1e-2, qPrintable(QString::number(*course.drift)));
     QVERIFY2(course.energyGained > lift, qPrintable(QString::number(course.energyGained)));
 }

@@ -37,9 +37,9 @@ void TestContactStudyPanel::smallStudy()
     QSignalSpy finished(&panel, &ContactStudyPanel::studyFinished);
     QVERIFY(panel.startStudy());
     QVERIFY(finished.wait(60000));
-    // course x 2 h, then manifold 1 and 4 x 2 h
-    QCOMPARE(panel.result().rows.size(), size_t(6));
-    QCOMPARE(panel.tableModel()->rowCount(), 6);
+    // course x 2 h, the soft step x 2 h, then manifold 1 and 4 x 2 h
+    QCOMPARE(panel.result().rows.size(), size_t(8));
+    QCOMPARE(panel.tableModel()->rowCount(), 8);
     QCOMPARE(panel.tableModel()->columnCount(), contactStudyCsvHeader().size());
 
     // The same numbers as the runner gives for this configuration (the runs are
