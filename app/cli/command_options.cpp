@@ -18,7 +18,8 @@ const QMap<QString, QStringList>& table()
         {QStringLiteral("check"), {"step", "tolerance", "format"}},
         {QStringLiteral("contact-study"), {"iterations", "dt", "t-end", "boxes", "output"}},
         {QStringLiteral("exercise"), {"seed", "output", "worksheet", "answer-key", "answers-key"}},
-        {QStringLiteral("diagnose"), {"simulator", "timeout", "format"}},
+        {QStringLiteral("diagnose"), {"simulator", "trajectory", "probes", "timeout", "format"}},
+        {QStringLiteral("probes"), {"output", "probes"}},
         {QStringLiteral("quantities"), {"format"}},
         {QStringLiteral("lessons"), {}},
         {QStringLiteral("integrators"), {}},
@@ -85,7 +86,9 @@ QString optionProblem(const QCommandLineParser& parser, const QString& command)
             else message += QStringLiteral(" (its options: --%1)").arg(own.join(QStringLiteral(", --")));
             return message + QStringLiteral(" (see rbw --help)");
         }
-        if (seen.contains(name)) {
+        // --simulator of diagnose may be given once per program (--format csv)
+        const bool repeatable = command == QLatin1String("diagnose") && name == QLatin1String("simulator");
+        if (seen.contains(name) && !repeatable) {
             const QStringList values = parser.values(name);
             return QStringLiteral("%1: --%2 is given %3 times (\"%4\"); give it once")
                 .arg(command, name)

@@ -1,18 +1,21 @@
 #include "app/cli/diagnose_command.h"
 #include "app/cli/standard_output.h"
 
+#include "app/cli/diagnose_report.h"
+#include "app/cli/probe_answer_files.h"
 #include "app/cli/simulator_process.h"
-#include "physics/workbook/checker/mistakes.h"
+#include "physics/workbook/probes/collision_replay.h"
 #include "physics/workbook/probes/probe_models.h"
 #include "physics/workbook/probes/probe_verdict.h"
 #include "physics/workbook/probes/probes.h"
+#include "physics/workbook/probes/template_tests.h"
 
-#include <QJsonArray>
 #include <QJsonDocument>
-#include <QJsonObject>
 #include <QTextStream>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace rbw {
 
@@ -24,7 +27,7 @@ constexpr int kBadInput = 2;
 constexpr double kDefaultTimeout = 10.0;   // seconds a probe may take
 constexpr double kMaxTimeout = 86400.0;
 
-int fail(const QString& message, const QStringList& stderrTail = {})
+void report(const QString& message, const QStringList& stderrTail = {})
 {
     QTextStream err(stderr);
     err << "rbw: diagnose: " << message << '\n';
@@ -32,174 +35,159 @@ int fail(const QString& message, const QStringList& stderrTail = {})
         err << "rbw: diagnose: its last lines on standard error:\n";
         for (const QString& l : stderrTail) err << "  " << l << '\n';
     }
+}
+
+int fail(const QString& message)
+{
+    report(message);
     return kBadInput;
 }
 
-QString numbers(const std::vector<double>& v)
-{
-    QStringList parts;
-    for (double x : v) parts << QString::number(x, 'g', 9);
-    return QLatin1Char('(') + parts.join(", ") + QLatin1Char(')');
-}
+struct Settings {
+    std::optional<probes::ProbeGroup> group;
+    double timeout = kDefaultTimeout;
+};
 
-QJsonArray jsonNumbers(const std::vector<double>& v)
+// One program through the probes and the template's public tests; run.failure set (and
+// reported) when it could not be run or broke the protocol.
+DiagnoseRun runLive(const QString& commandText, const Settings& settings, OfflineAnswers& answers)
 {
-    QJsonArray a;
-    for (double x : v) a.append(x);
-    return a;
-}
-
-QJsonArray jsonStrings(const std::vector<std::string>& v)
-{
-    QJsonArray a;
-    for (const std::string& s : v) a.append(QString::fromStdString(s));
-    return a;
-}
-
-// The ids the motion probes cannot check: the collision models and the hand-only ones.
-std::vector<std::string> notChecked(probes::ProbeScope scope)
-{
-    std::vector<std::string> ids;
-    for (const MistakeInfo& m : mistakeCatalogue()) {
-        if (probes::scopeOf(m.mistake) == scope) ids.push_back(m.id);
+    DiagnoseRun run;
+    run.source = commandText;
+    run.sourceKind = QStringLiteral("simulator");
+    const SimulatorCommand command = parseSimulatorCommand(commandText);
+    if (command.program.isEmpty()) {
+        run.failure = "--simulator: no program given, got \"" + commandText + "\"";
+        report(run.failure);
+        return run;
     }
-    return ids;
-}
-
-QJsonObject toJson(const QString& command, const std::vector<probes::Probe>& all,
-                   const probes::SimulatorDiagnosis& d)
-{
-    QJsonObject doc;
-    doc["simulator"] = command;
-    doc["probes_group"] = QStringLiteral("motion");
-    doc["tolerance"] = QJsonObject{{"relative", probes::kRelativeTolerance},
-                                   {"of", "the largest |value| of that quantity (x, v, omega or r) in the probe"}};
-    doc["verdict"] = QString::fromLatin1(probes::verdictName(d.verdict));
-    doc["mistakes"] = jsonStrings(d.mistakes);
-    doc["possible_mistakes"] = jsonStrings(d.possibleMistakes);
-    QJsonArray details;
-    for (const std::vector<std::string>* ids : {&d.mistakes, &d.possibleMistakes}) {
-        for (const std::string& id : *ids) {
-            if (const MistakeInfo* m = findMistake(id)) {
-                details.append(QJsonObject{{"id", m->id}, {"equation", m->equation}, {"explanation", m->explanation}});
-            }
-        }
-    }
-    doc["mistake_details"] = details;
-    if (d.firstDivergence) {
-        const probes::Divergence& f = *d.firstDivergence;
-        doc["first_divergence"] = QJsonObject{
-            {"probe", d.divergenceProbe + 1},
-            {"probe_name", QString::fromStdString(all[d.divergenceProbe].name)},
-            {"step", f.step},
-            {"body", f.body},
-            {"quantity", QString::fromStdString(f.quantity)},
-            {"component", f.component},
-            {"expected", jsonNumbers(f.expected)},
-            {"given", jsonNumbers(f.given)},
-        };
-    } else {
-        doc["first_divergence"] = QJsonValue::Null;
-    }
-    QJsonArray rows;
-    for (std::size_t p = 0; p < d.probes.size(); ++p) {
-        rows.append(QJsonObject{{"probe", static_cast<int>(p) + 1},
-                                {"name", QString::fromStdString(all[p].name)},
-                                {"purpose", QString::fromStdString(all[p].purpose)},
-                                {"matches", d.probes[p].matchesRight},
-                                {"reproduced_by", jsonStrings(d.probes[p].reproducedBy)}});
-    }
-    doc["probes"] = rows;
-    doc["not_checked"] = QJsonObject{{"collision", jsonStrings(notChecked(probes::ProbeScope::Collision))},
-                                     {"hand_only", jsonStrings(notChecked(probes::ProbeScope::HandOnly))}};
-    return doc;
-}
-
-void writeText(QTextStream& out, const QString& command, const std::vector<probes::Probe>& all,
-               const probes::SimulatorDiagnosis& d)
-{
-    out << "rbw diagnose: " << all.size() << " motion probes through \"" << command << "\"\n";
-    out << "verdict: " << probes::verdictName(d.verdict) << '\n';
-    auto describe = [&out](const std::string& id) {
-        const MistakeInfo* m = findMistake(id);
-        if (m == nullptr) return;
-        out << "  " << m->id << ": " << m->equation << '\n' << "    " << m->explanation << '\n';
+    const int timeoutMs = static_cast<int>(std::lround(settings.timeout * 1000.0));
+    const std::vector<probes::Probe> all = probes::probesOf(settings.group.value_or(probes::ProbeGroup::All));
+    auto runOne = [&](const probes::Probe& probe, int number, const QString& name) -> std::optional<probes::Answers> {
+        const SimulatorRun r = runSimulatorProbe(command, probes::protocolLines(probe), number, name, timeoutMs);
+        if (r.ok) return r.answers;
+        run.failure = r.failure;
+        report(r.failure, r.stderrTail);
+        return std::nullopt;
     };
-    if (!d.mistakes.empty()) out << "mistake:\n";
-    for (const std::string& id : d.mistakes) describe(id);
-    if (!d.possibleMistakes.empty()) out << "possible mistakes (each explains your answers equally well):\n";
-    for (const std::string& id : d.possibleMistakes) describe(id);
-    if (d.firstDivergence) {
-        const probes::Divergence& f = *d.firstDivergence;
-        out << "first divergence from the right algorithm: probe " << d.divergenceProbe + 1 << " ("
-            << QString::fromStdString(all[d.divergenceProbe].name) << "), step " << f.step << ", body " << f.body
-            << ", " << QString::fromStdString(f.quantity) << ": expected " << numbers(f.expected) << ", yours "
-            << numbers(f.given) << '\n';
+    for (std::size_t p = 0; p < all.size(); ++p) {
+        const std::optional<probes::Answers> a =
+            runOne(all[p], static_cast<int>(p) + 1, QString::fromStdString(all[p].name));
+        if (!a) return run;
+        answers.given.push_back(*a);
     }
-    out << "probes:\n";
-    for (std::size_t p = 0; p < d.probes.size(); ++p) {
-        out << "  " << p + 1 << ' ' << QString::fromStdString(all[p].name) << "  ";
-        if (d.probes[p].matchesRight) {
-            out << "matches";
-        } else {
-            out << "differs";
-            if (!d.probes[p].reproducedBy.empty()) {
-                QStringList labels;
-                for (const std::string& l : d.probes[p].reproducedBy) labels << QString::fromStdString(l);
-                out << "; reproduced by " << labels.join(", ");
-            }
+    answers.probes = all;
+    answers.ok = true;
+    // the template's public tests, numbered after the probes
+    int number = static_cast<int>(all.size());
+    for (const probes::TemplateTest& t : probes::templatePublicTests()) {
+        ++number;
+        const QString name = "the template's " + QString::fromStdString(t.name) +
+                             (t.version.empty() ? QString() : " (" + QString::fromStdString(t.version) + ")");
+        const std::optional<probes::Answers> a = runOne(t.scene, number, name);
+        if (!a) {
+            answers.ok = false;
+            return run;
         }
-        out << "  (" << QString::fromStdString(all[p].purpose) << ")\n";
+        run.templateTests.push_back({&t, probes::runTemplateTest(t, *a)});
     }
-    out << "Numbers match within " << probes::kRelativeTolerance
-        << " of the largest |value| of that quantity in the probe (float round-off matches).\n"
-        << "Not checked yet: the collision group (its impulse mistakes) and the template's public tests.\n";
+    return run;
+}
+
+// The diagnosis of answers read or run.
+void diagnose(DiagnoseRun& run, const OfflineAnswers& answers)
+{
+    run.probes = answers.probes;
+    // the group of the probes answered (offline without --probes: those found)
+    const auto colliding =
+        std::count_if(run.probes.begin(), run.probes.end(), [](const probes::Probe& p) { return p.collides; });
+    run.group = colliding == 0                                             ? QStringLiteral("motion")
+                : colliding == static_cast<long>(run.probes.size()) ? QStringLiteral("collision")
+                                                                    : QStringLiteral("all");
+    std::vector<probes::ReplayModel> candidates = probes::motionModels();
+    if (colliding > 0) {
+        for (const probes::ReplayModel& m : probes::collisionModels()) candidates.push_back(m);
+    }
+    run.diagnosis = probes::diagnoseAnswers(run.probes, answers.given, candidates);
 }
 
 } // namespace
 
 int runDiagnoseCommand(const QCommandLineParser& parser, const QStringList& arguments)
 {
-    if (!arguments.isEmpty()) {
-        return fail("reading a folder of answers (rbw diagnose DIR) is not built yet; use --simulator \"CMD\"");
+    const QStringList simulators = parser.values("simulator");
+    const bool live = !simulators.isEmpty();
+    const bool trajectory = parser.isSet("trajectory");
+    const int sources = (live ? 1 : 0) + (trajectory ? 1 : 0) + (arguments.isEmpty() ? 0 : 1);
+    if (sources == 0) {
+        return fail("what to diagnose: --simulator \"CMD\" (the command that starts your program), "
+                    "--trajectory FILE.csv or a folder of answers (rbw diagnose DIR)");
     }
-    if (!parser.isSet("simulator")) return fail("--simulator \"CMD\" is required (the command that starts your program)");
-    const QString commandText = parser.value("simulator");
-    const SimulatorCommand command = parseSimulatorCommand(commandText);
-    if (command.program.isEmpty()) return fail("--simulator: no program given, got \"" + commandText + "\"");
+    if (sources > 1 || arguments.size() > 1) {
+        return fail("give one of --simulator \"CMD\", --trajectory FILE.csv or one folder DIR, got " +
+                    QString(live ? "--simulator " : "") + (trajectory ? "--trajectory " : "") + arguments.join(' '));
+    }
 
-    double timeout = kDefaultTimeout;
+    Settings settings;
     if (parser.isSet("timeout")) {
+        if (!live) return fail("--timeout: only for --simulator (offline answers are read, not run)");
         bool ok = false;
-        timeout = parser.value("timeout").toDouble(&ok);
-        if (!ok || !std::isfinite(timeout) || timeout <= 0.0 || timeout > kMaxTimeout) {
+        settings.timeout = parser.value("timeout").toDouble(&ok);
+        if (!ok || !std::isfinite(settings.timeout) || settings.timeout <= 0.0 || settings.timeout > kMaxTimeout) {
             return fail("--timeout: must be a number of seconds > 0 and at most 86400, got \"" +
                         parser.value("timeout") + "\"");
         }
     }
     const QString format = parser.isSet("format") ? parser.value("format") : QStringLiteral("text");
-    if (format != "text" && format != "json") {
-        return fail("--format: must be text or json for diagnose, got \"" + format + "\"");
+    if (format != "text" && format != "json" && format != "csv") {
+        return fail("--format: must be text, json or csv for diagnose, got \"" + format + "\"");
+    }
+    if (simulators.size() > 1 && format != "csv") {
+        return fail(QStringLiteral("%1 --simulator options: several programs need --format csv (one row per program "
+                                   "and probe)")
+                        .arg(simulators.size()));
+    }
+    if (parser.isSet("probes")) {
+        settings.group = probes::probeGroupNamed(parser.value("probes").toStdString());
+        if (!settings.group) {
+            return fail("--probes: must be motion, collision or all, got \"" + parser.value("probes") + "\"");
+        }
     }
 
-    const std::vector<probes::Probe>& all = probes::motionProbes();
-    std::vector<probes::Answers> given;
-    for (std::size_t p = 0; p < all.size(); ++p) {
-        const SimulatorRun run =
-            runSimulatorProbe(command, probes::protocolLines(all[p]), static_cast<int>(p) + 1,
-                              QString::fromStdString(all[p].name), static_cast<int>(std::lround(timeout * 1000.0)));
-        if (!run.ok) return fail(run.failure, run.stderrTail);
-        given.push_back(run.answers);
-    }
-
-    const probes::SimulatorDiagnosis d = probes::diagnoseAnswers(all, given, probes::motionModels());
-    QTextStream& out = cli::out();   // checked: a write error is exit 2 (standard_output.h)
-    if (format == "json") {
-        out << QJsonDocument(toJson(commandText, all, d)).toJson(QJsonDocument::Indented);
+    std::vector<DiagnoseRun> runs;
+    if (live) {
+        for (const QString& commandText : simulators) {
+            OfflineAnswers answers;
+            DiagnoseRun run = runLive(commandText, settings, answers);
+            if (run.failure.isEmpty()) diagnose(run, answers);
+            else if (format != "csv") return kBadInput;
+            runs.push_back(run);
+        }
     } else {
-        writeText(out, commandText, all, d);
+        DiagnoseRun run;
+        run.source = trajectory ? parser.value("trajectory") : arguments.first();
+        run.sourceKind = trajectory ? QStringLiteral("trajectory") : QStringLiteral("folder");
+        const OfflineAnswers answers = trajectory ? readTrajectoryCsv(run.source, settings.group)
+                                                  : readAnswersFolder(run.source, settings.group);
+        if (!answers.ok) return fail(answers.failure);
+        diagnose(run, answers);
+        runs.push_back(run);
     }
-    return d.verdict == probes::Verdict::Matches ? kMatches : kNotMatching;
+
+    QTextStream& out = cli::out();   // checked: a write error is exit 2 (standard_output.h)
+    if (format == "csv") {
+        writeDiagnoseCsv(out, runs);
+    } else if (format == "json") {
+        out << QJsonDocument(diagnoseJson(runs.front())).toJson(QJsonDocument::Indented);
+    } else {
+        writeDiagnoseText(out, runs.front());
+    }
+    int status = kMatches;
+    for (const DiagnoseRun& r : runs) {
+        if (!r.failure.isEmpty()) status = kBadInput;
+        else if (r.diagnosis.verdict != probes::Verdict::Matches) status = std::max(status, kNotMatching);
+    }
+    return status;
 }
 
 } // namespace rbw

@@ -5,6 +5,7 @@
 #include "app/cli/command_options.h"
 #include "app/cli/contact_study_command.h"
 #include "app/cli/diagnose_command.h"
+#include "app/cli/probes_command.h"
 #include "app/cli/exercise_command.h"
 #include "app/cli/output_options.h"
 #include "app/cli/standard_output.h"
@@ -338,9 +339,13 @@ int dispatch(QCommandLineParser& parser)
         "  exercise LESSON --seed N\n"
         "                    the lesson's scene with new numbers (docs/exercises.md); --output FILE,\n"
         "                    --worksheet F.html, --answer-key F.html, --answers-key F.json\n"
-        "  diagnose --simulator \"CMD\"\n"
-        "                    run your own simulator through the motion probes and name its mistake\n"
-        "                    (docs/simulator-protocol.md); --timeout S, --format text|json\n\n"
+        "  diagnose --simulator \"CMD\" | --trajectory FILE.csv | DIR\n"
+        "                    run your own simulator through the probes (or read its offline answers)\n"
+        "                    and name its mistake (docs/simulator-protocol.md); --probes motion|collision|all,\n"
+        "                    --timeout S, --format text|json; exit 0 matches, 1 not\n"
+        "  probes --output DIR\n"
+        "                    write each probe as protocol commands, DIR/<probe>.commands, for the\n"
+        "                    offline mode of diagnose; --probes motion|collision|all\n\n"
         "Exit status: 0 success, 2 bad input (the message names the file, field and reason),\n"
         "3 the simulation blew up (the message names the step, body and quantity).\n\n"
         "Example:\n"
@@ -349,7 +354,7 @@ int dispatch(QCommandLineParser& parser)
         "  rbw study lessons/10-accuracy-lab/scene.json --integrators explicit-euler,rk4 --dt 0.1,0.01");
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument("command", "run, study, check, exercise, contact-study, diagnose, lessons, integrators or quantities");
+    parser.addPositionalArgument("command", "run, study, check, exercise, contact-study, diagnose, probes, lessons, integrators or quantities");
     parser.addPositionalArgument("scene", "the scene file, for run and study", "[SCENE.json]");
     parser.addOptions({
         {"steps", "Number of steps to take (default: the scene's \"steps\").", "N"},
@@ -362,7 +367,8 @@ int dispatch(QCommandLineParser& parser)
         {"step", "For check: the step K whose numbers are checked (default: the answers file's \"step\", else 0).", "K"},
         {"tolerance", "For check: relative tolerance of a correct answer (default 1e-3: 4 significant figures).", "REL"},
         {"t-end", "For study and contact-study: end time T in seconds, the same for every run (default: steps x dt of the scene).", "T"},
-        {"output", "For study, contact-study and exercise: write the CSV or the scene to FILE instead of standard output.", "FILE"},
+        {"output", "For study, contact-study and exercise: write the CSV or the scene to FILE instead of standard output; "
+                   "for probes: the folder DIR of the probe files.", "FILE"},
         {"seed", "For exercise: the seed N of the new numbers (the same seed, the same scene).", "N"},
         {"iterations", "For contact-study: the manifold model's solver iterations (default: 1,2,4,8,16).", "N1,N2,..."},
         {"boxes", "For contact-study rain: the number of boxes (default 100).", "N"},
@@ -371,6 +377,8 @@ int dispatch(QCommandLineParser& parser)
         {"answers-key", "For exercise: write the key as an answers file (rbw check accepts it) to FILE.", "FILE"},
         {"simulator", "For diagnose: the command that starts your simulator (docs/simulator-protocol.md).", "CMD"},
         {"timeout", "For diagnose: seconds a probe may take (default 10).", "S"},
+        {"trajectory", "For diagnose: your simulator's answers to the probes as CSV (docs/simulator-protocol.md).", "FILE.csv"},
+        {"probes", "For diagnose and probes: the probe group, motion, collision or all.", "GROUP"},
     });
     if (!parser.parse(QCoreApplication::arguments())) {
         return badInput(parser.errorText() + " (see rbw --help)");
@@ -415,6 +423,7 @@ int dispatch(QCommandLineParser& parser)
         return rbw::runExerciseCommand(parser, args[1]);
     }
     if (command == "diagnose") return rbw::runDiagnoseCommand(parser, args.mid(1));
+    if (command == "probes") return rbw::runProbesCommand(parser, args.mid(1));
     return badInput("unknown command \"" + args.join(' ') + "\" (see rbw --help)");
 }
 

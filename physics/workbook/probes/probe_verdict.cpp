@@ -1,5 +1,7 @@
 #include "physics/workbook/probes/probe_verdict.h"
 
+#include "physics/workbook/probes/collision_replay.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -106,14 +108,32 @@ std::vector<std::string> idsOf(const std::vector<ReplayModel>& models)
     return ids;
 }
 
-void name(SimulatorDiagnosis& d, const std::vector<ReplayModel>& best)
+void name(SimulatorDiagnosis& d, const std::vector<ReplayModel>& best,
+          const std::vector<std::optional<double>>& fits, const std::vector<ReplayModel>& candidates)
 {
     const std::vector<std::string> ids = idsOf(best);
     if (ids.size() == 1) d.mistakes = ids;
     else d.possibleMistakes = ids;
+    for (const ReplayModel& m : best) {
+        const std::size_t k = static_cast<std::size_t>(std::find(candidates.begin(), candidates.end(), m) - candidates.begin());
+        if (k < fits.size() && fits[k]) d.restitution.push_back({modelLabel(m), *fits[k]});
+    }
 }
 
 } // namespace
+
+std::vector<Answers> modelAnswers(const std::vector<Probe>& probes, const std::vector<Answers>& given,
+                                  const ReplayModel& model, std::optional<double>* restitution)
+{
+    const bool anyCollides =
+        std::any_of(probes.begin(), probes.end(), [](const Probe& p) { return p.collides; });
+    const RestitutionFit fit = anyCollides ? fitRestitution(probes, given, model) : RestitutionFit{};
+    const double c = fit.c;
+    if (restitution != nullptr) *restitution = fit.determined ? std::optional<double>(c) : std::nullopt;
+    std::vector<Answers> out;
+    for (const Probe& p : probes) out.push_back(p.collides ? replayWithContacts(p, model, c) : replay(p, model));
+    return out;
+}
 
 SimulatorDiagnosis diagnoseAnswers(const std::vector<Probe>& probes, const std::vector<Answers>& given,
                                    const std::vector<ReplayModel>& candidates)
@@ -122,9 +142,12 @@ SimulatorDiagnosis diagnoseAnswers(const std::vector<Probe>& probes, const std::
     const std::size_t n = std::min(probes.size(), given.size());
     d.probes.resize(n);
     bool allRight = true;
+    std::optional<double> rightC;
+    const std::vector<Answers> right = modelAnswers(probes, given, {}, &rightC);
     for (std::size_t p = 0; p < n; ++p) {
-        const std::optional<Divergence> div = firstDivergence(probes[p], replay(probes[p], {}), given[p]);
+        const std::optional<Divergence> div = firstDivergence(probes[p], right[p], given[p]);
         d.probes[p].matchesRight = !div;
+        d.probes[p].divergence = div;
         if (div && allRight) {
             d.divergenceProbe = static_cast<int>(p);
             d.firstDivergence = div;
@@ -133,6 +156,7 @@ SimulatorDiagnosis diagnoseAnswers(const std::vector<Probe>& probes, const std::
     }
     if (allRight) {
         d.verdict = Verdict::Matches;
+        if (rightC) d.restitution.push_back({modelLabel({}), *rightC});
         return d;
     }
 
@@ -140,11 +164,14 @@ SimulatorDiagnosis diagnoseAnswers(const std::vector<Probe>& probes, const std::
     std::vector<ReplayModel> full;
     std::vector<ReplayModel> best;
     int bestCount = 0;
+    std::vector<std::optional<double>> fits;
     for (const ReplayModel& m : candidates) {
         bool all = true;
         int wrongReproduced = 0;
+        fits.emplace_back();
+        const std::vector<Answers> expected = modelAnswers(probes, given, m, &fits.back());
         for (std::size_t p = 0; p < n; ++p) {
-            const bool same = !firstDivergence(probes[p], replay(probes[p], m), given[p]);
+            const bool same = !firstDivergence(probes[p], expected[p], given[p]);
             all = all && same;
             if (same && !d.probes[p].matchesRight) {
                 ++wrongReproduced;
@@ -160,10 +187,10 @@ SimulatorDiagnosis diagnoseAnswers(const std::vector<Probe>& probes, const std::
     }
     if (!full.empty()) {
         d.verdict = Verdict::Explained;
-        name(d, full);
+        name(d, full, fits, candidates);
     } else if (!best.empty()) {
         d.verdict = Verdict::PartlyExplained;
-        name(d, best);
+        name(d, best, fits, candidates);
     } else {
         d.verdict = Verdict::Unexplained;
     }

@@ -43,7 +43,14 @@ const char* verdictName(Verdict v);   // "matches", "explained", "partly-explain
 
 struct ProbeOutcome {
     bool matchesRight = false;
+    std::optional<Divergence> divergence;    // this probe's first divergence from the right algorithm
     std::vector<std::string> reproducedBy;   // labels of the models that give these answers
+};
+
+// A fitted coefficient of restitution (collision probes) and the model it belongs to.
+struct RestitutionOf {
+    std::string model;   // modelLabel()
+    double c = 0.0;
 };
 
 struct SimulatorDiagnosis {
@@ -53,7 +60,19 @@ struct SimulatorDiagnosis {
     int divergenceProbe = -1;                    // index of the probe of firstDivergence, -1: none
     std::optional<Divergence> firstDivergence;   // against the right algorithm
     std::vector<ProbeOutcome> probes;            // one per probe
+    // With collision probes: c fitted for the right algorithm (matches) or for each
+    // named model (mistakes, possible_mistakes) whose answers depend on c; empty
+    // without collision probes.
+    std::vector<RestitutionOf> restitution;
 };
+
+// What `model` answers to each probe; a probe that collides is replayed with contacts
+// and the c fitted to `given` over all such probes (collision_replay.h), which
+// *restitution receives (nullopt: no collision probe, or c changes none of the model's
+// answers: relative-velocity-reversed never applies an impulse on an approaching
+// contact).
+std::vector<Answers> modelAnswers(const std::vector<Probe>& probes, const std::vector<Answers>& given,
+                                  const ReplayModel& model, std::optional<double>* restitution = nullptr);
 
 // `given[i]` holds the answers to probes[i]. Verdicts:
 //   matches           the right algorithm reproduces every answer;
@@ -62,7 +81,8 @@ struct SimulatorDiagnosis {
 //                     right algorithm does not (the ones that do so for most probes are
 //                     named);
 //   unexplained       no candidate reproduces any probe where the answers are wrong.
-// Candidates that differ only in their variant count as one id.
+// Candidates that differ only in their variant count as one id. Probes that collide
+// are replayed with contacts and each candidate's own fitted c (modelAnswers).
 SimulatorDiagnosis diagnoseAnswers(const std::vector<Probe>& probes, const std::vector<Answers>& given,
                                    const std::vector<ReplayModel>& candidates);
 

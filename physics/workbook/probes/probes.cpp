@@ -144,6 +144,42 @@ const std::vector<Probe>& motionProbes()
     return all;
 }
 
+std::optional<ProbeGroup> probeGroupNamed(std::string_view name)
+{
+    if (name == "motion") return ProbeGroup::Motion;
+    if (name == "collision") return ProbeGroup::Collision;
+    if (name == "all") return ProbeGroup::All;
+    return std::nullopt;
+}
+
+const char* probeGroupName(ProbeGroup group)
+{
+    switch (group) {
+    case ProbeGroup::Motion: return "motion";
+    case ProbeGroup::Collision: return "collision";
+    case ProbeGroup::All: return "all";
+    }
+    return "all";
+}
+
+std::vector<Probe> probesOf(ProbeGroup group)
+{
+    std::vector<Probe> out;
+    if (group != ProbeGroup::Collision) out = motionProbes();
+    if (group != ProbeGroup::Motion) out.insert(out.end(), collisionProbes().begin(), collisionProbes().end());
+    return out;
+}
+
+const Probe* findProbe(std::string_view name)
+{
+    for (const std::vector<Probe>* group : {&motionProbes(), &collisionProbes()}) {
+        for (const Probe& p : *group) {
+            if (p.name == name) return &p;
+        }
+    }
+    return nullptr;
+}
+
 std::string plainDecimal(double value)
 {
     if (value == 0.0) return "0";   // also -0: the protocol's numbers have no "-0"

@@ -14,12 +14,15 @@
 //   set_orientation and set_velocity come before the first step (the engine's scene
 //   has initial values only, and replayWithEngine must be able to run every probe);
 //   every step has the same h (one scene, one dt);
-//   bodies never come close (collisions are the collision group's business).
+//   bodies never come close (collisions are the collision group's business), except in
+//   a probe that `collides` (the collision group, collision_probes.cpp).
 #pragma once
 
 #include "physics/engine/math_types.h"
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rbw::probes {
@@ -47,11 +50,25 @@ struct Probe {
     std::string name;      // e.g. "motion-01"
     std::string purpose;   // one sentence: what it brings out
     std::vector<Command> commands;
+    bool collides = false;   // its bodies touch: replayed with the impulse (collision_replay.h)
 };
 
 // The motion group: no contacts, forces at off-centre points, tilted orientations,
 // several steps (probes.cpp describes each one).
 const std::vector<Probe>& motionProbes();
+
+// The collision group: two boxes whose corner hits a face, off the origin, turned and
+// spinning (collision_probes.cpp describes each one).
+const std::vector<Probe>& collisionProbes();
+
+// The groups `rbw diagnose --probes` and `rbw probes --probes` choose from.
+enum class ProbeGroup { Motion, Collision, All };
+std::optional<ProbeGroup> probeGroupNamed(std::string_view name);   // "motion", "collision", "all"
+const char* probeGroupName(ProbeGroup group);
+// The probes of a group, in the order they run (all: motion, then collision).
+std::vector<Probe> probesOf(ProbeGroup group);
+// The probe of any group with this name, or nullptr.
+const Probe* findProbe(std::string_view name);
 
 // The probe's commands as protocol lines, from "reset" to "quit"; numbers as plain
 // decimals that read back to the same double (never an exponent, nan or inf), masses

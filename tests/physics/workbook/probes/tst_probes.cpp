@@ -13,6 +13,7 @@
 //   omega1 = (-0.275/0.4225, 0.175/0.52, 0.075/0.2225)
 #include "tests/test_support.h"
 
+#include "physics/workbook/probes/collision_replay.h"
 #include "physics/workbook/probes/probe_models.h"
 #include "physics/workbook/probes/probe_verdict.h"
 #include "physics/workbook/probes/probes.h"
@@ -65,11 +66,15 @@ class TestProbes : public QObject {
 private slots:
     void probesAreWellFormedAndPlain()
     {
-        const std::vector<std::string> issues = probesAreWellFormed(motionProbes());
+        const std::vector<std::string> issues = probesAreWellFormed(probesOf(ProbeGroup::All));
         QVERIFY2(issues.empty(), issues.empty() ? "" : issues.front().c_str());
         QVERIFY(motionProbes().size() >= 4);
+        QVERIFY(collisionProbes().size() >= 2);
+        QCOMPARE(probesOf(ProbeGroup::All).size(), motionProbes().size() + collisionProbes().size());
+        for (const Probe& p : collisionProbes()) QVERIFY(p.collides && findProbe(p.name) != nullptr);
+        for (const Probe& p : motionProbes()) QVERIFY(!p.collides && findProbe(p.name) != nullptr);
         // Every number is a plain decimal: no exponent, nan or inf; masses whole numbers.
-        for (const Probe& p : motionProbes()) {
+        for (const Probe& p : probesOf(ProbeGroup::All)) {
             const std::vector<std::string> lines = protocolLines(p);
             QCOMPARE(QString::fromStdString(lines.front()), QStringLiteral("reset"));
             QCOMPARE(QString::fromStdString(lines.back()), QStringLiteral("quit"));
@@ -245,6 +250,175 @@ private slots:
         QCOMPARE(d.divergenceProbe, 0);
         QCOMPARE(QString::fromStdString(d.firstDivergence->quantity), QStringLiteral("x"));
         QCOMPARE(d.firstDivergence->step, 1);
+    }
+
+    // The collision replay. Without contacts it is the motion replay (a motion probe's
+    // bodies never touch); in every collision probe c changes some answer (an impulse
+    // happens); and through the right impulse the total momentum P = sum M v and the
+    // total angular momentum about the origin sum (x x M v + L) stay what the first
+    // step's pushes made them: an impulse J n at p adds x_A x J n + (p - x_A) x J n =
+    // p x J n to A and takes p x J n from B; a free explicit Euler step moves x along the
+    // v it keeps and keeps L. L = R I0 R^T omega from the answer's r and omega, I0 = M/12
+    // diag(b^2 + c^2, a^2 + c^2, a^2 + b^2). Negative control: with the lever arms from
+    // the origin (x_a = x_b = p) the impulse adds (x_A - x_B) x J n.
+    void collisionReplayConservesMomentum()
+    {
+        for (const Probe& p : motionProbes()) QVERIFY(replayWithContacts(p, {}, 0.5) == replay(p, {}));
+        double wrongDrift = 0.0;
+        for (const Probe& p : collisionProbes()) {
+            // c changes an answer: an impulse happens (collision-03 separates: only
+            // relative-velocity-reversed pushes there)
+            const ReplayModel pusher = p.name == "collision-03" ? ReplayModel{Mistake::RelativeVelocityReversed, 0}
+                                                                : ReplayModel{};
+            QVERIFY2(replayWithContacts(p, pusher, 0.0) != replayWithContacts(p, pusher, 1.0), p.name.c_str());
+            const std::vector<AnswerSlot> where = answerSlots(p);
+            std::vector<double> masses;
+            std::vector<Vec3> sizes;
+            for (const rbw::probes::Command& c : p.commands) {
+                if (c.kind != CommandKind::AddBody) continue;
+                masses.push_back(c.mass);
+                sizes.push_back(c.b);
+            }
+            QCOMPARE(masses.size(), std::size_t(2));
+            // P and the total angular momentum of the two answers k, k + 1 (bodies 0, 1 of one step)
+            auto momenta = [&](const Answers& a, std::size_t k) {
+                Vec3 P = Vec3::Zero(), Ltotal = Vec3::Zero();
+                for (std::size_t b = 0; b < 2; ++b) {
+                    const Answer& s = a[k + b];
+                    const Vec3 x(s[0], s[1], s[2]), v(s[3], s[4], s[5]), omega(s[6], s[7], s[8]);
+                    const rbw::Mat3 R = rbw::Quat(s[9], s[10], s[11], s[12]).toRotationMatrix();
+                    const Vec3 e = sizes[b].cwiseProduct(sizes[b]);
+                    const rbw::Mat3 I0 = (masses[b] / 12.0 * Vec3(e.y() + e.z(), e.x() + e.z(), e.x() + e.y())).asDiagonal();
+                    const rbw::Mat3 I_W = R * I0 * R.transpose();
+                    P += masses[b] * v;
+                    Ltotal += x.cross(masses[b] * v) + I_W * omega;
+                }
+                return std::pair<Vec3, Vec3>(P, Ltotal);
+            };
+            std::size_t first = 0;   // the answers after step 1
+            while (where[first].step != 1) ++first;
+            for (const ReplayModel& m : {ReplayModel{}, ReplayModel{Mistake::ImpulseLeverArmFromOrigin, 0}}) {
+                const Answers a = replayWithContacts(p, m, 0.6);
+                const auto [P1, L1] = momenta(a, first);
+                const auto [Pn, Ln] = momenta(a, a.size() - 2);
+                QVERIFY2((Pn - P1).norm() < 1e-12 * P1.norm(), p.name.c_str());
+                const double drift = (Ln - L1).norm() / L1.norm();
+                if (m.mistake == Mistake::None) QVERIFY2(drift < 1e-12, qPrintable(QString::number(drift)));
+                else wrongDrift = std::max(wrongDrift, drift);
+            }
+        }
+        QVERIFY2(wrongDrift > 1e-6, qPrintable(QString::number(wrongDrift)));
+    }
+
+    // The fit recovers c exactly for the right algorithm and every collision model;
+    // the motion probes say nothing about c.
+    void restitutionIsFitted_data()
+    {
+        QTest::addColumn<int>("mistake");
+        QTest::addColumn<double>("c");
+        std::vector<ReplayModel> models{ReplayModel{}};
+        for (const ReplayModel& m : collisionModels()) models.push_back(m);
+        for (const ReplayModel& m : models) {
+            for (double c : {0.15, 0.6, 0.95}) {
+                QTest::newRow(qPrintable(QStringLiteral("%1 c=%2").arg(QString::fromStdString(modelLabel(m))).arg(c)))
+                    << static_cast<int>(m.mistake) << c;
+            }
+        }
+    }
+    void restitutionIsFitted()
+    {
+        QFETCH(int, mistake);
+        QFETCH(double, c);
+        const ReplayModel m{static_cast<Mistake>(mistake), 0};
+        std::vector<Answers> given;
+        for (const Probe& p : collisionProbes()) given.push_back(replayWithContacts(p, m, c));
+        const RestitutionFit fit = fitRestitution(collisionProbes(), given, m);
+        QVERIFY(fit.determined);
+        QVERIFY2(std::abs(fit.c - c) < 1e-9, qPrintable(QString::number(fit.c, 'g', 17)));
+        std::vector<Answers> motion;
+        for (const Probe& p : motionProbes()) motion.push_back(replay(p, m));
+        QVERIFY(!fitRestitution(motionProbes(), motion, m).determined);
+    }
+
+    // The distinguishability table of the collision group: the answers of the right
+    // algorithm and of every collision model, with c = 0.3 or 0.8, are reproduced by no
+    // other model of the catalogue at any c it can fit, by more than ten times the
+    // tolerance, through x, v and omega alone. The one pair no scene can separate
+    // (impulse-without-one-plus with c, restitution-one-minus with 1 - c: both
+    // numerators are -c v_rel.n) must come out inseparable.
+    void collisionDistinguishability()
+    {
+        std::vector<ReplayModel> own{ReplayModel{}};
+        for (const ReplayModel& m : collisionModels()) own.push_back(m);
+        std::vector<ReplayModel> all = own;
+        for (const ReplayModel& m : motionModels()) all.push_back(m);
+        const std::vector<Probe>& probes = collisionProbes();
+        auto same = [&](const ReplayModel& a, const ReplayModel& b, double c) {
+            std::vector<Answers> given;
+            for (const Probe& p : probes) given.push_back(withoutOrientation(replayWithContacts(p, a, c)));
+            const std::vector<Answers> other = modelAnswers(probes, given, b);
+            for (std::size_t p = 0; p < probes.size(); ++p) {
+                if (firstDivergence(probes[p], withoutOrientation(other[p]), given[p], 10.0)) return false;
+            }
+            return true;
+        };
+        const ReplayModel onePlus{Mistake::ImpulseWithoutOnePlus, 0}, oneMinus{Mistake::RestitutionOneMinus, 0};
+        QStringList failures;
+        for (const ReplayModel& a : own) {
+            for (const ReplayModel& b : all) {
+                if (a == b) continue;
+                const bool pair = (a == onePlus && b == oneMinus) || (a == oneMinus && b == onePlus);
+                for (double c : {0.3, 0.8}) {
+                    if (same(a, b, c) != pair) {
+                        failures << QStringLiteral("%1 (c = %2) %3 %4 on the collision probes")
+                                        .arg(QString::fromStdString(modelLabel(a)))
+                                        .arg(c)
+                                        .arg(pair ? "is separated from" : "is reproduced by")
+                                        .arg(QString::fromStdString(modelLabel(b)));
+                    }
+                }
+            }
+        }
+        QVERIFY2(failures.isEmpty(), qPrintable(failures.join('\n')));
+        // negative control: a model reproduces itself at its own c
+        QVERIFY(same(own[1], own[1], 0.3));
+    }
+
+    // diagnoseAnswers over motion and collision probes: the right algorithm matches and
+    // reports its c; each collision model is explained by its id (the inseparable pair
+    // as possible mistakes), with its own c.
+    void collisionVerdicts()
+    {
+        const std::vector<Probe> probes = probesOf(ProbeGroup::All);
+        std::vector<ReplayModel> candidates = motionModels();
+        for (const ReplayModel& m : collisionModels()) candidates.push_back(m);
+        auto answersOf = [&](const ReplayModel& m, double c) {
+            std::vector<Answers> all;
+            for (const Probe& p : probes) all.push_back(p.collides ? replayWithContacts(p, m, c) : replay(p, m));
+            return all;
+        };
+        SimulatorDiagnosis d = diagnoseAnswers(probes, answersOf({}, 0.4), candidates);
+        QCOMPARE(QString(verdictName(d.verdict)), QStringLiteral("matches"));
+        QCOMPARE(d.restitution.size(), std::size_t(1));
+        QVERIFY(std::abs(d.restitution[0].c - 0.4) < 1e-9);
+        for (const ReplayModel& m : collisionModels()) {
+            d = diagnoseAnswers(probes, answersOf(m, 0.7), candidates);
+            QCOMPARE(QString(verdictName(d.verdict)), QStringLiteral("explained"));
+            const bool pair = m.mistake == Mistake::ImpulseWithoutOnePlus || m.mistake == Mistake::RestitutionOneMinus;
+            if (pair) {
+                QCOMPARE(d.possibleMistakes,
+                         (std::vector<std::string>{"impulse-without-one-plus", "restitution-one-minus"}));
+            } else {
+                QCOMPARE(d.mistakes, std::vector<std::string>{modelId(m)});
+            }
+            QVERIFY(d.firstDivergence);
+            QCOMPARE(probes[d.divergenceProbe].collides, true);   // every motion probe matches
+            bool found = false;
+            for (const RestitutionOf& r : d.restitution) {
+                if (r.model == modelLabel(m)) found = std::abs(r.c - 0.7) < 1e-9;
+            }
+            QVERIFY(found);
+        }
     }
 };
 

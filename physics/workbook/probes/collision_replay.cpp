@@ -1,0 +1,181 @@
+#include "physics/workbook/probes/collision_replay.h"
+
+#include "physics/engine/course/box_box_sat.h"
+#include "physics/workbook/checker/mistakes.h"
+#include "physics/workbook/probes/probe_models.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+
+namespace rbw::probes {
+
+namespace {
+
+// One body as the student's simulator stores it.
+struct SimBody {
+    double mass = 1.0;
+    Vec3 size = Vec3::Ones();
+    Vec3 x_W = Vec3::Zero(), v_W = Vec3::Zero();
+    Quat r_WB = Quat::Identity();
+    Vec3 L_W = Vec3::Zero();
+    Vec3 omega_W = Vec3::Zero();
+    Mat3 Iinv_W = Mat3::Zero();                   // the stored world inverse inertia
+    std::vector<std::pair<Vec3, Vec3>> forces;    // (p, f) for the next step
+    bool stepped = false;
+};
+
+// The inverse inertia the simulator stores after a step: the one its omega = Iinv_W L
+// uses (body-inverse-inertia: I0^-1; inertia-not-inverted: R I0 R^T).
+Mat3 storedInverseInertia(const HandEulerStep& s, Mistake m)
+{
+    if (m == Mistake::BodyInverseInertia) return s.I0inv_B;
+    if (m == Mistake::InertiaNotInverted) return s.R_WB * s.I0_B * s.R_WB.transpose();
+    return s.Iinv_W;
+}
+
+void stepBody(SimBody& b, double h, Mistake m, int variant)
+{
+    BodyStepInputs in;
+    in.h = h;
+    in.mass = b.mass;
+    in.size = b.size;
+    in.x_W = b.x_W;
+    in.v_W = b.v_W;
+    in.q_WB = b.r_WB;
+    in.L_W = b.L_W;
+    in.forces = b.forces;
+    in.firstStep = !b.stepped;
+    in.omega_W = b.omega_W;   // the simulator's own omega_n
+    const HandEulerStep s = handEulerStep(in, m, variant);
+    b.x_W = s.x_W;
+    b.v_W = s.v_W;
+    b.r_WB = s.q_WB;
+    b.L_W = s.L_W;
+    b.omega_W = s.omega_W;
+    b.Iinv_W = storedInverseInertia(s, m);
+    b.forces.clear();
+    b.stepped = true;
+}
+
+// The impulse between A = bodies[i] and B = bodies[j], if they touch.
+void collide(SimBody& A, SimBody& B, double c, Mistake m)
+{
+    const BoxPose boxA{A.x_W, A.r_WB.toRotationMatrix(), 0.5 * A.size};
+    const BoxPose boxB{B.x_W, B.r_WB.toRotationMatrix(), 0.5 * B.size};
+    const std::optional<ContactGeometry> contact = collideBoxBoxSAT(boxA, boxB);
+    if (!contact) return;
+    ContactInputs in;
+    in.g = *contact;
+    in.restitution = c;
+    in.x_A = A.x_W;
+    in.v_A = A.v_W;
+    in.omega_A = A.omega_W;
+    in.Iinv_A = A.Iinv_W;
+    in.invM_A = 1.0 / A.mass;
+    in.x_B = B.x_W;
+    in.v_B = B.v_W;
+    in.omega_B = B.omega_W;
+    in.Iinv_B = B.Iinv_W;
+    in.invM_B = 1.0 / B.mass;
+    const HandImpulse k = handImpulse(in, m);
+    // the simulator's own separating test on its own v_rel.n
+    if (k.v_rel_n > 0.0 && m != Mistake::NoSeparatingCheck) return;
+    const double J = k.numerator / k.denominator;
+    const Vec3 Jn_W = J * contact->n_W;
+    A.v_W += Jn_W / A.mass;
+    B.v_W -= Jn_W / B.mass;
+    A.L_W += k.x_a.cross(Jn_W);
+    B.L_W -= k.x_b.cross(Jn_W);
+    A.omega_W = A.Iinv_W * A.L_W;
+    B.omega_W = B.Iinv_W * B.L_W;
+}
+
+} // namespace
+
+std::vector<ReplayModel> collisionModels()
+{
+    std::vector<ReplayModel> models;
+    for (const MistakeInfo& info : mistakeCatalogue()) {
+        if (scopeOf(info.mistake) != ProbeScope::Collision) continue;
+        for (int v = 0; v < info.variants; ++v) models.push_back({info.mistake, v});
+    }
+    return models;
+}
+
+Answers replayWithContacts(const Probe& probe, const ReplayModel& model, double c)
+{
+    const bool inStep = scopeOf(model.mistake) == ProbeScope::Motion;
+    const Mistake stepMistake = inStep ? model.mistake : Mistake::None;
+    const Mistake impulseMistake = scopeOf(model.mistake) == ProbeScope::Collision ? model.mistake : Mistake::None;
+    std::vector<SimBody> bodies;
+    Answers answers;
+    for (const Command& cmd : probe.commands) {
+        switch (cmd.kind) {
+        case CommandKind::AddBody: {
+            SimBody b;
+            b.x_W = cmd.a;
+            b.size = cmd.b;
+            b.mass = cmd.mass;
+            bodies.push_back(b);
+            break;
+        }
+        case CommandKind::SetOrientation:
+            bodies[cmd.body].r_WB = cmd.q.normalized();
+            break;
+        case CommandKind::SetVelocity:
+            bodies[cmd.body].v_W = cmd.a;
+            break;
+        case CommandKind::ApplyForce:
+            bodies[cmd.body].forces.push_back({cmd.a, cmd.b});
+            break;
+        case CommandKind::Step:
+            for (SimBody& b : bodies) stepBody(b, cmd.h, stepMistake, model.variant);
+            for (std::size_t i = 0; i < bodies.size(); ++i) {
+                for (std::size_t j = i + 1; j < bodies.size(); ++j) collide(bodies[i], bodies[j], c, impulseMistake);
+            }
+            break;
+        case CommandKind::State: {
+            const SimBody& b = bodies[cmd.body];
+            answers.push_back({b.x_W.x(), b.x_W.y(), b.x_W.z(), b.v_W.x(), b.v_W.y(), b.v_W.z(), b.omega_W.x(),
+                               b.omega_W.y(), b.omega_W.z(), b.r_WB.w(), b.r_WB.x(), b.r_WB.y(), b.r_WB.z()});
+            break;
+        }
+        }
+    }
+    return answers;
+}
+
+RestitutionFit fitRestitution(const std::vector<Probe>& probes, const std::vector<Answers>& given,
+                              const ReplayModel& model)
+{
+    double num = 0.0, den = 0.0;
+    for (std::size_t p = 0; p < std::min(probes.size(), given.size()); ++p) {
+        if (!probes[p].collides) continue;
+        const Answers a0 = replayWithContacts(probes[p], model, 0.0);
+        const Answers a1 = replayWithContacts(probes[p], model, 1.0);
+        const std::vector<AnswerSlot> slots = answerSlots(probes[p]);
+        // the first answer that c changes: the step of the first impulse
+        std::size_t first = a0.size();
+        for (std::size_t k = 0; k < a0.size() && first == a0.size(); ++k) {
+            if (a0[k] != a1[k]) first = k;
+        }
+        if (first == a0.size()) continue;
+        // every answer of that step: v and omega are a0 + c (a1 - a0)
+        for (std::size_t k = first; k < a0.size() && k < given[p].size() && slots[k].step == slots[first].step; ++k) {
+            for (int i = 3; i < 9; ++i) {
+                const double d = a1[k][i] - a0[k][i];
+                num += (given[p][k][i] - a0[k][i]) * d;
+                den += d * d;
+            }
+        }
+    }
+    RestitutionFit fit;
+    if (den > 0.0) {
+        fit.c = std::clamp(num / den, 0.0, 1.0);
+        fit.determined = true;
+    }
+    return fit;
+}
+
+} // namespace rbw::probes
