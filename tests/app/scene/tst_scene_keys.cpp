@@ -50,8 +50,9 @@ const QList<OtherFormat> kOtherFormats{
     {"app/output/value_format.cpp", "a trace value's kind in the run output (docs/cli.md)", {"quaternion"}},
     {"app/cli/",
      "rbw's options (--dt, --steps, --integrator, --trace none), the results of `rbw check` and `rbw diagnose`'s JSON "
-     "(a probe's name, the probes) (docs/cli.md, docs/simulator-protocol.md)",
-     {"body", "dt", "integrator", "name", "none", "probes", "steps"}},
+     "(a probe's name, the probes, the restitution fitted to a simulator's answers) (docs/cli.md, "
+     "docs/simulator-protocol.md)",
+     {"body", "dt", "integrator", "name", "none", "probes", "restitution", "steps"}},
     {"app/exercise/answers_file.cpp", "answers files (docs/checker.md)", {"body"}},
     {"app/exercise/exercise_spec.cpp", "exercise.json's own keys (docs/exercises.md)", {"description"}},
     {"app/derivation/", "the derivation templates' placeholders, {{mass}}, {{body}} (docs/derivation-templates.md)",
