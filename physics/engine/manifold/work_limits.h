@@ -21,8 +21,9 @@
 // dense pile of equal boxes has about 13 pairs per box; turned boxes have larger
 // bounding boxes (up to sqrt 3 wider) and the speculative margin grows them by 2 cm.
 // The limits are 5x and 2.5x that (a touching 10 x 10 x 10 block steps in full,
-// tst_pile_limits), and far above what the 1000-box rain needs (docs/performance.md,
-// "Piles"). A fixed body (a floor made of a box) is not capped: each of its pairs has a
+// tst_pile_limits), and far above what the 1000-box rain needs: at most 6 pairs of one
+// box and 0.92 pairs per box in any of its 600 steps (rbw_bench_rain's census,
+// docs/performance.md, "Three engines"). A fixed body (a floor made of a box) is not capped: each of its pairs has a
 // movable box, which is.
 //
 // When a step exceeds a limit, the scene has no meaningful contact solution in this
