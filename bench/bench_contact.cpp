@@ -13,11 +13,11 @@
 //   overlap   the deepest box-box overlap: the smallest SAT overlap of each
 //             overlapping pair (course/box_box_sat.h), the largest of those      [m]
 //   below     how far the lowest box corner is below the ground                 [m]
+// The scene and the outcome: rain_scene.h (shared with bench_rain.cpp, which also times
+// Rapier and reports sleeping, mean height and drift).
 // Results and machine: docs/performance.md, "Contacts: the box rain".
 // Run: ./build/bench/rbw_bench_contact   (about a minute)
-#include "physics/engine/course/box_box_sat.h"
-#include "physics/engine/collision/broad_phase.h"
-#include "physics/engine/scene.h"
+#include "bench/rain_scene.h"
 #include "physics/engine/world.h"
 
 #include <benchmark/benchmark.h>
@@ -35,8 +35,6 @@
 
 namespace {
 
-constexpr double kH = 1.0 / 60.0;
-
 // CPU time of this thread [s]: the machine is shared, so wall time is not the cost.
 double threadSeconds()
 {
@@ -44,102 +42,15 @@ double threadSeconds()
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
     return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
-constexpr int kSteps = 600;
 
-struct RainBox {
-    rbw::Vec3 x_W;
-    rbw::Quat q_WB;
-};
-
-// The initial poses of the rain, shared by every engine.
-std::vector<RainBox> rainPoses(int n)
-{
-    std::mt19937 rng(20261123u);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    std::uniform_real_distribution<double> angle(0.0, 0.2);
-    std::vector<RainBox> out;
-    for (int i = 0; i < n; ++i) {
-        const int layer = i / 100;
-        const int k = i % 100;
-        // x = 1.5 (ix - 4.5), z = 1.5 (iz - 4.5), y = 3 + 1.5 layer
-        const rbw::Vec3 x_W(1.5 * (k % 10 - 4.5), 3.0 + 1.5 * layer, 1.5 * (k / 10 - 4.5));
-        rbw::Vec3 axis(unit(rng), unit(rng), unit(rng));
-        if (axis.norm() < 1e-6) axis = rbw::Vec3::UnitX();
-        const rbw::Quat q_WB(Eigen::AngleAxisd(angle(rng), axis.normalized()));
-        out.push_back(RainBox{x_W, q_WB});
-    }
-    return out;
-}
-
-rbw::SceneDef rainScene(int n, rbw::ContactModel model)
-{
-    rbw::SceneDef s;
-    s.name = "box rain";
-    s.dt = kH;
-    s.steps = kSteps;
-    s.integrator = "symplectic-euler";
-    s.g_W = rbw::Vec3(0.0, -9.81, 0.0);
-    s.restitution = 0.0;
-    s.friction = 0.5;
-    s.contactModel = model;
-    // The course model as the issue measured it: with its position correction.
-    s.positionCorrection = model == rbw::ContactModel::Course;
-    rbw::PlaneDef ground;
-    ground.name = "ground";
-    s.planes.push_back(ground);
-    const std::vector<RainBox> poses = rainPoses(n);
-    for (int i = 0; i < n; ++i) {
-        rbw::BodyDef b;
-        b.name = "b";
-        b.name += std::to_string(i);
-        b.size = rbw::Vec3::Ones();
-        b.mass = 1.0;
-        b.x0_W = poses[static_cast<std::size_t>(i)].x_W;
-        b.q0_WB = poses[static_cast<std::size_t>(i)].q_WB;
-        s.bodies.push_back(b);
-    }
-    return s;
-}
-
-struct Outcome {
-    double kineticEnergy = 0.0;
-    int moving = 0;      // |v| > 0.01 m/s
-    int moving01 = 0;    // |v| > 0.1 m/s
-    double overlap = 0.0;
-    double below = 0.0;
-};
-
-struct FinalBox {
-    rbw::BoxPose pose;
-    rbw::Vec3 v_W;
-    rbw::Vec3 omega_W;
-};
-
-// The outcome from the final boxes, the same measure for every engine (see the top).
-Outcome measure(const std::vector<FinalBox>& boxes)
-{
-    Outcome o;
-    std::vector<rbw::Aabb> aabbs;
-    for (const FinalBox& b : boxes) {
-        // KE of a unit cube: 1/2 |v|^2 + 1/2 omega . (1/6 E) omega
-        o.kineticEnergy += 0.5 * b.v_W.squaredNorm() + 0.5 * b.omega_W.squaredNorm() / 6.0;
-        const double speed = b.v_W.norm();
-        if (speed > 0.01) ++o.moving;
-        if (speed > 0.1) ++o.moving01;
-        for (const rbw::Vec3& corner_W : rbw::boxCorners(b.pose)) o.below = std::max(o.below, -corner_W.y());
-        aabbs.push_back(rbw::boxAabb(b.pose));
-    }
-    rbw::AabbTree tree;
-    std::vector<std::pair<int, int>> pairs;
-    rbw::BroadPhaseStats stats;
-    tree.findPairs(aabbs, std::vector<char>(boxes.size(), 1), pairs, stats);
-    for (const auto& [i, j] : pairs) {
-        const std::optional<rbw::ContactGeometry> hit =
-            rbw::collideBoxBoxSAT(boxes[static_cast<std::size_t>(i)].pose, boxes[static_cast<std::size_t>(j)].pose);
-        if (hit) o.overlap = std::max(o.overlap, hit->depth);
-    }
-    return o;
-}
+using rain::FinalBox;
+using rain::kH;
+using rain::kSteps;
+using rain::measure;
+using rain::Outcome;
+using rain::RainBox;
+using rain::rainPoses;
+using rain::rainScene;
 
 void report(benchmark::State& state, double seconds, const Outcome& o)
 {

@@ -109,7 +109,7 @@ Aabb merged(const Aabb& a, const Aabb& b)
 } // namespace
 
 void AabbTree::findPairs(const std::vector<Aabb>& boxes, const std::vector<char>& movable,
-                         std::vector<std::pair<int, int>>& pairs, BroadPhaseStats& stats)
+                         std::vector<std::pair<int, int>>& pairs, BroadPhaseStats& stats, const PairLimits& limits)
 {
     assert(movable.size() == boxes.size());
     pairs.clear();
@@ -129,6 +129,8 @@ void AabbTree::findPairs(const std::vector<Aabb>& boxes, const std::vector<char>
     movable_ = &movable;
     pairs_ = &pairs;
     stats_ = &stats;
+    limits_ = limits;
+    if (limits.maxPerBody > 0) pairsOf_.assign(static_cast<std::size_t>(n), 0);
     nodes_.reserve(static_cast<std::size_t>(2 * n));
     const int root = build(boxes, 0, n);
     selfPairs(root);
@@ -185,15 +187,37 @@ void AabbTree::testLeaves(const Node& a, const Node& b)
             const int j = index_[static_cast<std::size_t>(y)];
             if (!(*movable_)[static_cast<std::size_t>(i)] && !(*movable_)[static_cast<std::size_t>(j)]) continue;
             ++stats_->pairsTested;
-            if (aabbOverlap((*boxes_)[static_cast<std::size_t>(i)], (*boxes_)[static_cast<std::size_t>(j)])) {
-                pairs_->emplace_back(std::min(i, j), std::max(i, j));
+            if (aabbOverlap((*boxes_)[static_cast<std::size_t>(i)], (*boxes_)[static_cast<std::size_t>(j)]) &&
+                !report(i, j)) {
+                return;
             }
         }
     }
 }
 
+bool AabbTree::report(int i, int j)
+{
+    pairs_->emplace_back(std::min(i, j), std::max(i, j));
+    if (limits_.maxPerBody > 0) {
+        for (const int box : {i, j}) {
+            if (!(*movable_)[static_cast<std::size_t>(box)]) continue;
+            if (++pairsOf_[static_cast<std::size_t>(box)] > limits_.maxPerBody) {
+                stats_->limitHit = PairLimitHit::PairsPerBody;
+                stats_->limitBody = box;
+                return false;
+            }
+        }
+    }
+    if (limits_.maxPairs > 0 && static_cast<long>(pairs_->size()) > limits_.maxPairs) {
+        stats_->limitHit = PairLimitHit::Pairs;
+        return false;
+    }
+    return true;
+}
+
 void AabbTree::selfPairs(int node)
 {
+    if (stats_->limitHit != PairLimitHit::None) return;
     const Node& nd = nodes_[static_cast<std::size_t>(node)];
     if (nd.left < 0) {
         testLeaves(nd, nd);
@@ -206,6 +230,7 @@ void AabbTree::selfPairs(int node)
 
 void AabbTree::crossPairs(int a, int b)
 {
+    if (stats_->limitHit != PairLimitHit::None) return;
     const Node& na = nodes_[static_cast<std::size_t>(a)];
     const Node& nb = nodes_[static_cast<std::size_t>(b)];
     if (!aabbOverlap(na.box, nb.box)) return;

@@ -11,6 +11,8 @@
 //   sorted order   the box indices sorted by min_W.x(), kept between calls
 //   pairsTested    AABB overlap tests done in the sweep
 //   pairsOverlapping   pairs reported
+//   PairLimits     caps on one AabbTree::findPairs call (the manifold model's work
+//                  limits, manifold/work_limits.h): pairs in all, pairs of one movable box
 //
 // Rules:
 //   - Tight AABB of an oriented box (e.g. Ericson, "Real-Time Collision Detection",
@@ -38,10 +40,24 @@ struct Aabb {
     Vec3 max_W = Vec3::Zero();
 };
 
+// Caps on the pairs one AabbTree::findPairs call reports; 0: no cap.
+struct PairLimits {
+    long maxPairs = 0;     // pairs in all
+    int maxPerBody = 0;    // pairs of one movable box (a pair counts for each movable box in it)
+};
+
+// Why a findPairs call stopped before it had every pair.
+enum class PairLimitHit { None, Pairs, PairsPerBody };
+
 // Counters of one findPairs call.
 struct BroadPhaseStats {
     long pairsTested = 0;        // AABB overlap tests done in the sweep
     long pairsOverlapping = 0;   // pairs reported (= pairs.size())
+    // A cap of PairLimits that was exceeded: the search stopped at the first pair beyond
+    // it, and `pairs` holds the pairs found until then (limitBody: the box with more
+    // pairs than maxPerBody; -1 otherwise).
+    PairLimitHit limitHit = PairLimitHit::None;
+    int limitBody = -1;
 };
 
 // The tightest AABB of an oriented box: c_W -+ e, e_k = sum_j |R_WB(k, j)| h_j.
@@ -81,10 +97,15 @@ private:
 // other box of its slab (a 10 x 10 x 10 pile: ~50 000 pair tests, docs/collisions.md).
 // The output is the same as SweepAndPrune's: every overlapping pair with a movable box,
 // each once, sorted by (i, j). pairsTested counts the box-box AABB tests.
+// With `limits`, the search stops at the first pair beyond a cap and says which in
+// stats.limitHit: a pile of n coincident boxes has n (n - 1) / 2 overlapping pairs, and
+// the caps keep the work and the memory of the call linear in n (Jolt's PhysicsSystem
+// likewise takes a maximum of body pairs and reports BodyPairCacheFull beyond it).
 class AabbTree {
 public:
     void findPairs(const std::vector<Aabb>& boxes, const std::vector<char>& movable,
-                   std::vector<std::pair<int, int>>& pairs, BroadPhaseStats& stats);
+                   std::vector<std::pair<int, int>>& pairs, BroadPhaseStats& stats,
+                   const PairLimits& limits = {});
 
 private:
     struct Node {
@@ -98,6 +119,7 @@ private:
     void selfPairs(int node);
     void crossPairs(int a, int b);
     void testLeaves(const Node& a, const Node& b);
+    bool report(int i, int j);   // adds the pair; false once a cap is exceeded
 
     std::vector<Node> nodes_;
     std::vector<int> index_;
@@ -107,6 +129,8 @@ private:
     const std::vector<char>* movable_ = nullptr;
     std::vector<std::pair<int, int>>* pairs_ = nullptr;
     BroadPhaseStats* stats_ = nullptr;
+    PairLimits limits_;
+    std::vector<int> pairsOf_;   // per box: pairs reported so far (with a per-box cap)
 };
 
 } // namespace rbw

@@ -2,6 +2,7 @@
 
 #include "physics/engine/manifold/box_box_clip.h"
 #include "physics/engine/manifold/box_plane_manifold.h"
+#include "physics/engine/manifold/work_limits.h"
 #include "physics/engine/quantities.h"
 #include "physics/engine/course/contact_response.h"
 
@@ -30,6 +31,7 @@ void ManifoldContactStage::run(StepContext& ctx)
     // is the world's state, ctx.contacts: nothing here depends on earlier steps.
     if (w.settings.sleep) wakeLoadedBodies(ctx);
     findManifolds(ctx);
+    if (!ctx.status.ok) return;   // a work limit was exceeded (work_limits.h)
     solve(ctx);
     if (ctx.trace != nullptr) recordPoints(ctx);
     // Keep the impulses of this step's manifolds, and of the sleeping pairs not solved.
@@ -91,7 +93,16 @@ void ManifoldContactStage::findManifolds(StepContext& ctx)
             w.aabbs[static_cast<std::size_t>(b)] = box;
         }
         BroadPhaseStats& stats = ctx.scratch.broadPhase;
-        w.broadPhase.findPairs(w.aabbs, ctx.movable, w.pairs, stats);
+        // The caps that keep a step linear in the bodies (work_limits.h); beyond one the
+        // step stops with the limit named.
+        const int movableBodies = static_cast<int>(
+            std::count_if(ctx.movable.begin(), ctx.movable.end(), [](char m) { return m != 0; }));
+        const PairLimits limits = manifoldPairLimits(movableBodies);
+        w.broadPhase.findPairs(w.aabbs, ctx.movable, w.pairs, stats, limits);
+        if (stats.limitHit != PairLimitHit::None) {
+            ctx.status = workLimitStatus(ctx.scene, ctx.k, limits, stats);
+            return;
+        }
         record(ctx.trace, q::pairs_tested, -1, double(stats.pairsTested));
         record(ctx.trace, q::pairs_overlapping, -1, double(stats.pairsOverlapping));
         w.pairDone.assign(w.pairs.size(), 0);

@@ -122,6 +122,9 @@ private slots:
     void fixedPairsSkipped();
     void touchingCounts();
     void gridTestsFarFewerPairs();
+    void treeLimits_data();
+    void treeLimits();
+    void fixedBoxNotCapped();
 };
 
 // A unit cube turned 45 deg about z: R = [[c, -s, 0], [s, c, 0], [0, 0, 1]], h = 1/2.
@@ -324,6 +327,74 @@ void TestBroadPhase::gridTestsFarFewerPairs()
     // Again, with the order kept from the last call: the same counts.
     sap.findPairs(boxes, movable, pairs, stats);
     QCOMPARE(stats.pairsTested, 49500L);
+}
+
+// The AABB tree's caps (PairLimits; the manifold model's work limits, issue 22) on 20
+// coincident unit cubes: C(20, 2) = 190 overlapping pairs, 19 per cube. A cap stops the
+// search at the first pair beyond it ("more than"): maxPerBody 18 stops when some cube
+// gets its 19th pair, and that cube is then in exactly 19 of the pairs found;
+// maxPerBody 19 and maxPairs 190 are just not exceeded (all 190 pairs, the control);
+// maxPairs 189 stops at the 190th pair. With no cap: 190 pairs.
+void TestBroadPhase::treeLimits_data()
+{
+    QTest::addColumn<long>("maxPairs");
+    QTest::addColumn<int>("maxPerBody");
+    QTest::addColumn<int>("hit");        // PairLimitHit
+    QTest::addColumn<long>("pairCount");   // -1: not checked (where the search stopped)
+    QTest::newRow("no caps") << 0L << 0 << int(rbw::PairLimitHit::None) << 190L;
+    QTest::newRow("per body 19") << 0L << 19 << int(rbw::PairLimitHit::None) << 190L;
+    QTest::newRow("per body 18") << 0L << 18 << int(rbw::PairLimitHit::PairsPerBody) << -1L;
+    QTest::newRow("pairs 190") << 190L << 0 << int(rbw::PairLimitHit::None) << 190L;
+    QTest::newRow("pairs 189") << 189L << 0 << int(rbw::PairLimitHit::Pairs) << 190L;
+}
+
+void TestBroadPhase::treeLimits()
+{
+    QFETCH(long, maxPairs);
+    QFETCH(int, maxPerBody);
+    QFETCH(int, hit);
+    QFETCH(long, pairCount);
+    const std::vector<Aabb> boxes(20, rbw::boxAabb(box(Vec3(0, 0, 0), Mat3::Identity(), Vec3::Constant(0.5))));
+    rbw::AabbTree tree;
+    PairList pairs;
+    BroadPhaseStats stats;
+    tree.findPairs(boxes, std::vector<char>(boxes.size(), 1), pairs, stats, rbw::PairLimits{maxPairs, maxPerBody});
+    QCOMPARE(int(stats.limitHit), hit);
+    if (pairCount >= 0) QCOMPARE(long(pairs.size()), pairCount);
+    if (stats.limitHit == rbw::PairLimitHit::PairsPerBody) {
+        QVERIFY(stats.limitBody >= 0 && stats.limitBody < 20);
+        const long with = std::count_if(pairs.begin(), pairs.end(), [&stats](const std::pair<int, int>& p) {
+            return p.first == stats.limitBody || p.second == stats.limitBody;
+        });
+        QCOMPARE(with, long(maxPerBody) + 1);
+        QVERIFY(long(pairs.size()) < 190L);
+    } else {
+        QCOMPARE(stats.limitBody, -1);
+    }
+}
+
+// A fixed box is not capped: each of its pairs has a movable box, which is. A fixed
+// 100 x 1 x 1 floor under 20 unit cubes at x = 5i - 47.5 (5 m apart: they do not touch
+// each other) has 20 pairs, each cube 1; maxPerBody 1 is not exceeded.
+void TestBroadPhase::fixedBoxNotCapped()
+{
+    std::vector<Aabb> boxes{rbw::boxAabb(box(Vec3(0, -1, 0), Mat3::Identity(), Vec3(50, 0.5, 0.5)))};
+    for (int i = 0; i < 20; ++i) {
+        boxes.push_back(rbw::boxAabb(box(Vec3(5.0 * i - 47.5, 0, 0), Mat3::Identity(), Vec3::Constant(0.5))));
+    }
+    std::vector<char> movable(boxes.size(), 1);
+    movable[0] = 0;
+    rbw::AabbTree tree;
+    PairList pairs;
+    BroadPhaseStats stats;
+    tree.findPairs(boxes, movable, pairs, stats, rbw::PairLimits{0, 1});
+    QCOMPARE(int(stats.limitHit), int(rbw::PairLimitHit::None));
+    QCOMPARE(long(pairs.size()), 20L);
+    // Negative control: the same floor movable is capped at its second pair.
+    movable[0] = 1;
+    tree.findPairs(boxes, movable, pairs, stats, rbw::PairLimits{0, 1});
+    QCOMPARE(int(stats.limitHit), int(rbw::PairLimitHit::PairsPerBody));
+    QCOMPARE(stats.limitBody, 0);
 }
 
 QTEST_APPLESS_MAIN(TestBroadPhase)
