@@ -45,12 +45,13 @@ std::vector<Probe> buildCollisionProbes()
 
     // 2. The other way round: a small turned box (body 0, A) flies sideways into the face
     // of a taller box (body 1, B; axis b_0: A's corner on B's face), both spinning, masses
-    // 2 and 3; the next step they overlap while separating.
+    // 2 and 3; the next step they overlap while separating. B's orientation is never set
+    // (add_body's identity), so a simulator that leaves it (0, 0, 0, 0)
+    // (orientation-zero-quaternion) shows it here too.
     Probe side{"collision-02", "a small turned box flies corner first into the side of a taller spinning box", {}, true};
     side.commands = {addBody(Vec3(-3.47, 2.1, 4.1), Vec3(0.5, 0.8, 0.4), 2),
                      addBody(Vec3(-2.5, 2.0, 4.0), Vec3(0.6, 1.5, 1.2), 3),
                      setOrientation(0, turn(40.0, Vec3(0.3, 1, 1))),
-                     setOrientation(1, turn(20.0, Vec3(-1, 2, 1))),
                      setVelocity(0, Vec3(1.5, 0.1, -0.1)),
                      applyForce(0, Vec3(-3.3, 2.3, 4.0), Vec3(2.0, -1.0, 0.0)),
                      applyForce(1, Vec3(-2.4, 2.5, 4.3), Vec3(1.0, 0.5, -1.0))};

@@ -3,6 +3,7 @@
 #include "physics/engine/course/box_box_sat.h"
 #include "physics/workbook/checker/mistakes.h"
 #include "physics/workbook/probes/probe_models.h"
+#include "physics/workbook/probes/simulator_state.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -21,8 +22,12 @@ struct SimBody {
     Vec3 L_W = Vec3::Zero();
     Vec3 omega_W = Vec3::Zero();
     Mat3 Iinv_W = Mat3::Zero();                   // the stored world inverse inertia
+    Mat3 I0inv_B = Mat3::Zero();                  // I0^-1 (impulse-body-inverse-inertia uses it)
     std::vector<std::pair<Vec3, Vec3>> forces;    // (p, f) for the next step
     bool stepped = false;
+    // What a simulator keeps between steps (simulator_state.h): the several-step models
+    // (forces-not-cleared, inertia-not-updated, ...) act here as in replay().
+    SimulatorState kept;
 };
 
 // The inverse inertia the simulator stores after a step: the one its omega = Iinv_W L
@@ -47,6 +52,7 @@ void stepBody(SimBody& b, double h, Mistake m, int variant)
     in.forces = b.forces;
     in.firstStep = !b.stepped;
     in.omega_W = b.omega_W;   // the simulator's own omega_n
+    enterState(b.kept, in);
     const HandEulerStep s = handEulerStep(in, m, variant);
     b.x_W = s.x_W;
     b.v_W = s.v_W;
@@ -54,6 +60,8 @@ void stepBody(SimBody& b, double h, Mistake m, int variant)
     b.L_W = s.L_W;
     b.omega_W = s.omega_W;
     b.Iinv_W = storedInverseInertia(s, m);
+    b.I0inv_B = s.I0inv_B;
+    keepState(s, b.kept);
     b.forces.clear();
     b.stepped = true;
 }
@@ -72,11 +80,13 @@ void collide(SimBody& A, SimBody& B, double c, Mistake m)
     in.v_A = A.v_W;
     in.omega_A = A.omega_W;
     in.Iinv_A = A.Iinv_W;
+    in.I0inv_A = A.I0inv_B;
     in.invM_A = 1.0 / A.mass;
     in.x_B = B.x_W;
     in.v_B = B.v_W;
     in.omega_B = B.omega_W;
     in.Iinv_B = B.Iinv_W;
+    in.I0inv_B = B.I0inv_B;
     in.invM_B = 1.0 / B.mass;
     const HandImpulse k = handImpulse(in, m);
     // the simulator's own separating test on its own v_rel.n
@@ -117,11 +127,14 @@ Answers replayWithContacts(const Probe& probe, const ReplayModel& model, double 
             b.x_W = cmd.a;
             b.size = cmd.b;
             b.mass = cmd.mass;
+            b.kept = newBodyState(b.size, b.mass, ReplayModel{stepMistake, model.variant});
+            b.r_WB = b.kept.r0_WB;
             bodies.push_back(b);
             break;
         }
         case CommandKind::SetOrientation:
             bodies[cmd.body].r_WB = cmd.q.normalized();
+            bodies[cmd.body].kept.orientationSet = true;
             break;
         case CommandKind::SetVelocity:
             bodies[cmd.body].v_W = cmd.a;

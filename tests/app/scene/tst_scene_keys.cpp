@@ -44,8 +44,7 @@ struct OtherFormat {
 
 const QList<OtherFormat> kOtherFormats{
     {"app/output/json_output.cpp", "the run output of `rbw run --format json` (docs/cli.md)",
-     {"angular_velocity", "bodies", "body", "dt", "fixed", "inertia_convention", "integrator", "linear_velocity", "name",
-      "orientation", "point", "position", "probes", "steps"}},
+     {"bodies", "body", "dt", "fixed", "inertia_convention", "integrator", "name", "point", "probes", "steps"}},
     {"app/output/study_csv.cpp", "the columns of the study CSVs (docs/accuracy-lab.md)", {"dt", "integrator", "steps"}},
     {"app/output/value_format.cpp", "a trace value's kind in the run output (docs/cli.md)", {"quaternion"}},
     {"app/cli/",
