@@ -173,6 +173,12 @@ void SoftStepSolver::solveRows(std::vector<SolverBody>& bodies, const std::vecto
             p.P_n += dn;
             applyImpulse(A, B, p.r_A_W, p.r_B_W, dn * c.n_W);
         }
+        // Friction in the relax pass only, as Box2D v3's b2SolveContact does (useBias ==
+        // false): friction against the push-out velocities let the rain's columns topple
+        // (1000 boxes, 4 substeps: mean height 4.82 m and 8 boxes still moving after
+        // 10 s with friction in both passes; 4.95 m and none faster than 0.1 m/s with it
+        // in the relax alone; docs/collisions.md, "The soft step").
+        if (useBias) continue;
         for (int k = 0; k < c.count; ++k) {
             Point& p = points_[static_cast<std::size_t>(c.first + k)];
             // lambda_t* = lambda_t - m_t v_t, scaled back onto |lambda_t| <= mu lambda_n

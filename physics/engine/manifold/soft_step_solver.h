@@ -8,9 +8,9 @@
 //   for each substep:
 //     integrateVelocities()       v += h_s F / M,  omega += h_s I^-1 q
 //     warmStart()                 the accumulated impulses applied again
-//     solve()                     soft contacts with a push-out bias (useBias = true)
+//     solve()                     soft normal rows with a push-out bias (useBias = true)
 //     integratePositions()        dx += h_s v,  dq <- dq + h_s/2 (0, omega) dq
-//     relax()                     the same rows without the bias (useBias = false)
+//     relax()                     the normal rows without the bias (useBias = false), then friction
 //   applyRestitution()            once: v_n -> -e v_n0 at points that were hit
 //   store()                       impulses into the manifolds (warm start, trace) and the
 //                                 step's impulse sums into the bodies (contact loads)
@@ -28,8 +28,9 @@
 //   lambda_n <- max(0, lambda_n + dlambda)
 // with s re-measured in every substep from the bodies' displacement since prepare():
 //   s = s_base + n . (dx_A + dq_A r_A - dx_B - dq_B r_B),  s_base = s_0 - n . (r_A - r_B).
-// Friction (both passes) as in the sequential impulses: lambda_t <- lambda_t - m_t v_t,
-// the 2-vector scaled back onto the Coulomb cone |lambda_t| <= mu lambda_n.
+// Friction, in the relax pass only (as Box2D v3 does), as in the sequential impulses:
+// lambda_t <- lambda_t - m_t v_t, the 2-vector scaled back onto the Coulomb cone
+// |lambda_t| <= mu lambda_n.
 //
 // How it meets the rest of the step (every integrator): the step's impulses (the sums
 // over substeps and the bounce) go to the integration as contact loads F_c = P/h,
