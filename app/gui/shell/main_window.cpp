@@ -400,12 +400,11 @@ bool MainWindow::goToStep(long k)
     QApplication::restoreOverrideCursor();
     if (reached) {
         alertLabel_->setVisible(!session_.status().ok);
-    } else if (k < session_.history().firstStep()) {
-        statusBar()->showMessage(tr("Step %1 is no longer recorded: the history keeps the last %2 steps (up to 1000, fewer for many bodies)")
-                                     .arg(k)
-                                     .arg(session_.history().size() - 1), 4000);
+    } else if (k < session_.history().firstStep()) {   // said beside the slider, where it was asked
+        scrubber_->showNote(tr("Step %1 is no longer kept: the history keeps the last %2 steps (from step %3)")
+                                .arg(k).arg(session_.history().size() - 1).arg(session_.history().firstStep()));
     } else {
-        statusBar()->showMessage(tr("Step %1 not reached: stopped at step %2").arg(k).arg(session_.world()->stepIndex()), 4000);
+        scrubber_->showNote(tr("Step %1 not reached: the run stopped at step %2").arg(k).arg(session_.history().current().state.stepIndex));
     }
     scrubber_->sync();
     // After Go (or Enter in the step box) the keys step and play again.
