@@ -183,7 +183,8 @@ int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, 
         const AnswersInput& in = inputs[n];
         if (fr.errorStatus != 0) continue;
         if (!states.has(fr.step)) {
-            fr.error = QStringLiteral("%1: step %2: %3").arg(fr.file).arg(fr.step).arg(blowUp);
+            // Which file blew up: the scene's, as rbw run names it (issue 22).
+            fr.error = QStringLiteral("%1: step %2 cannot be checked: %3: %4").arg(fr.file).arg(fr.step).arg(scenePath, blowUp);
             fr.errorStatus = kBlowUp;
             continue;
         }

@@ -3,6 +3,7 @@
 #include "physics/engine/integrator_registry.h"
 
 #include <QElapsedTimer>
+#include <QMetaObject>
 
 #include <algorithm>
 #include <cmath>
@@ -11,10 +12,14 @@ namespace rbw {
 
 Session::Session(QObject* parent) : QObject(parent) {}
 
-Session::~Session() = default;
+Session::~Session()
+{
+    if (run_) run_->cancel();   // its thread finishes alone and never calls back
+}
 
 void Session::load(const SceneDef& scene)
 {
+    cancelRun();
     base_ = scene;
     edited_ = scene;
     grab_.reset();
@@ -23,6 +28,7 @@ void Session::load(const SceneDef& scene)
 
 void Session::reset()
 {
+    cancelRun();
     grab_.reset();
     pendingPushes_.clear();
     history_.clear();
@@ -64,6 +70,7 @@ bool Session::rebuild(SceneDef edited, QString* error)
         }
         return false;
     }
+    cancelRun();
     edited_ = std::move(edited);
     // An edit is a new branch: the recorded steps after this one were computed with
     // the old parameters, so they go (as stepping on from here would drop them).
@@ -123,21 +130,21 @@ bool Session::setFriction(double mu, QString* error)
     return rebuild(std::move(s), error);
 }
 
-void Session::applyInteraction()
+void Session::applyInteraction(World& w) const
 {
     if (grab_) {
         const int b = grab_->body;
-        const Vec3 f_W = grab_->force(world_->massProperties()[b], world_->states()[b], edited_.dt);
-        world_->applyForceOnce(b, world_->bodyToWorld(b, grab_->p_B), f_W);
+        const Vec3 f_W = grab_->force(w.massProperties()[b], w.states()[b], edited_.dt);
+        w.applyForceOnce(b, w.bodyToWorld(b, grab_->p_B), f_W);
     }
     for (const auto& [p_W, f_W] : pendingPushes_) {
-        world_->applyForceOnce(edited_.push.body, p_W, f_W);
+        w.applyForceOnce(edited_.push.body, p_W, f_W);
     }
-    pendingPushes_.clear();
 }
 
 bool Session::step()
 {
+    cancelRun();
     const bool ok = stepQuiet();
     if (ok) {
         emit stateChanged();
@@ -150,7 +157,8 @@ bool Session::stepQuiet()
     if (!world_ || !world_->status().ok) {
         return false;
     }
-    applyInteraction();
+    applyInteraction(*world_);
+    pendingPushes_.clear();
     const StepStatus s = world_->step(&scratch_);
     if (!s.ok) {
         // The blown-up step's numbers are not results: keep the last good state in the
@@ -168,6 +176,7 @@ bool Session::stepQuiet()
 
 int Session::advance(int maxSteps, double budgetMs)
 {
+    cancelRun();
     QElapsedTimer clock;
     clock.start();
     int taken = 0;
@@ -199,6 +208,7 @@ void Session::restoreCurrentEntry()
 
 bool Session::stepBack()
 {
+    cancelRun();
     if (!world_ || !history_.pop()) {
         return false;
     }
@@ -210,6 +220,7 @@ bool Session::stepBack()
 
 bool Session::goToStep(long k, long maxNewSteps)
 {
+    cancelRun();
     if (!world_ || history_.empty() || k < history_.firstStep()) {
         return false;
     }
@@ -251,6 +262,78 @@ bool Session::goToStep(long k, long maxNewSteps)
         emit stateChanged();
     }
     return ok && world_->stepIndex() == k;
+}
+
+Session::RunStart Session::startRun(int maxSteps, double budgetMs, int waitMs)
+{
+    if (run_ || !world_ || !world_->status().ok || maxSteps < 1) {
+        return RunStart::Refused;
+    }
+    // The run steps a copy (a fresh world of the same scene, restored: bit for bit the
+    // same steps), so this world stays at the last finished step for the views.
+    auto copy = std::make_unique<World>(edited_);
+    copy->restore(world_->snapshot());
+    applyInteraction(*copy);
+    runPushes_ = pendingPushes_.size();
+    const quint64 serial = ++runSerial_;
+    run_ = StepRun::start(std::move(copy), maxSteps, budgetMs, [this, serial] {
+        // On the run's thread: the result is taken on this object's (the GUI) thread.
+        QMetaObject::invokeMethod(
+            this, [this, serial] {
+                if (run_ && serial == runSerial_) finishRun();
+            },
+            Qt::QueuedConnection);
+    });
+    if (run_->waitFor(waitMs)) {
+        finishRun();
+        return RunStart::Finished;
+    }
+    emit busyChanged(true);
+    return RunStart::Running;
+}
+
+void Session::cancelRun()
+{
+    if (!run_) {
+        return;
+    }
+    run_->cancel();
+    run_.reset();
+    emit busyChanged(false);
+}
+
+void Session::finishRun()
+{
+    const std::shared_ptr<StepRun> run = std::move(run_);
+    run_.reset();
+    StepRunResult r = run->take();
+    emit busyChanged(false);
+    if (!r.failure.empty()) {
+        // Nothing was computed: the world stays at the last finished step.
+        emit blownUp(QString::fromStdString("step " + std::to_string(world_->stepIndex()) + ": " + r.failure));
+        emit runFinished(0);
+        return;
+    }
+    const int taken = static_cast<int>(r.traces.size());
+    if (taken > 0 || r.blewUp) {
+        // The pushes the run's first step applied are spent; later ones wait.
+        pendingPushes_.erase(pendingPushes_.begin(),
+                             pendingPushes_.begin() + static_cast<long>(std::min(runPushes_, pendingPushes_.size())));
+    }
+    world_ = std::move(r.world);
+    for (int i = 0; i < taken; ++i) {
+        history_.push(HistoryEntry{std::move(r.states[i]), CompactTrace(r.traces[i]), true});
+        current_ = std::move(r.traces[i]);
+        hasCurrent_ = true;
+        emit stepRecorded(current_);
+    }
+    if (r.blewUp) {
+        emit blownUp(QString::fromStdString(world_->status().message));
+    }
+    if (taken > 0 || r.blewUp) {
+        emit stateChanged();
+    }
+    emit runFinished(taken);
 }
 
 void Session::beginGrab(int body, const Vec3& p_W)
@@ -306,6 +389,7 @@ bool Session::toggleTorques()
     if (!world_ || !world_->hasSwitchableTorque()) {
         return false;
     }
+    cancelRun();
     const bool on = !torquesOn();
     for (int i = 0; i < static_cast<int>(edited_.torques.size()); ++i) {
         world_->setTorqueEnabled(i, on);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "app/core/step_history.h"
+#include "app/core/step_run.h"
 #include "physics/engine/interaction/mouse_spring.h"
 #include "physics/engine/scene.h"
 #include "physics/engine/trace.h"
@@ -76,6 +77,22 @@ public:
     bool goToStep(long k, long maxNewSteps = 100000);
     const StepStatus& status() const;
 
+    // --- stepping off the GUI thread (step_run.h; the app's Step and Play) ---
+    enum class RunStart { Finished, Running, Refused };
+    // Takes up to maxSteps steps as advance(maxSteps, budgetMs) does (budgetMs <= 0: no
+    // limit), but on a thread of its own, and waits at most waitMs for it. If the run
+    // finished by then, its steps are recorded now, exactly as step() would record them
+    // (stepRecorded for each, blownUp, stateChanged), runFinished(taken) is emitted and
+    // the answer is Finished. Else the answer is Running: busy() is true (busyChanged)
+    // and the steps are recorded when the run finishes, from the event loop. Refused
+    // (nothing happens) while busy, with nothing loaded, or after a blow-up.
+    RunStart startRun(int maxSteps, double budgetMs, int waitMs);
+    bool busy() const { return run_ != nullptr; }
+    // Drops the running run (busyChanged(false)): the world stays at the last finished
+    // step, exactly. Every call above that changes the world or the parameters (step,
+    // advance, step back, go to step, reset, load, a parameter, K) cancels it first.
+    void cancelRun();
+
     // --- interaction ---
     // The mouse spring: grab a body at a world point, move the target, release.
     void beginGrab(int body, const Vec3& p_W);
@@ -112,6 +129,12 @@ signals:
     void parametersChanged();
     // The run stopped: a non-finite value or an energy jump; the message says where.
     void blownUp(const QString& message);
+    // A run started with startRun is computing (true) or over: finished, cancelled
+    // or failed (false).
+    void busyChanged(bool busy);
+    // A run of startRun finished and its `taken` steps are recorded (0 when it failed:
+    // blownUp says why).
+    void runFinished(int taken);
 
 private:
     bool rebuild(SceneDef edited, QString* error);
@@ -119,7 +142,10 @@ private:
     bool stepQuiet();
     // Puts the world and current_ at the history's current entry.
     void restoreCurrentEntry();
-    void applyInteraction();
+    // The grab's force and the queued pushes, on w, for its next step.
+    void applyInteraction(World& w) const;
+    // Records the finished run's steps (startRun).
+    void finishRun();
 
     SceneDef base_;     // as loaded from the lesson
     SceneDef edited_;   // with the student's parameters
@@ -130,6 +156,9 @@ private:
     bool hasCurrent_ = false;
     std::optional<MouseSpring> grab_;
     std::vector<std::pair<Vec3, Vec3>> pendingPushes_;   // (p_W, f_W)
+    std::shared_ptr<StepRun> run_;   // the run being computed (startRun), or none
+    std::size_t runPushes_ = 0;      // the pushes its first step applies
+    quint64 runSerial_ = 0;          // which run a queued "finished" is about
 };
 
 } // namespace rbw

@@ -9,6 +9,7 @@
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
+#include <QTimer>
 
 #include <algorithm>
 #include <climits>
@@ -43,6 +44,16 @@ HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
     label_->setObjectName("historyLabel");
     label_->setMinimumWidth(label_->fontMetrics().horizontalAdvance(QStringLiteral("step 000000 of 000000")));
     layout->addWidget(label_);
+    note_ = new QLabel;
+    note_->setObjectName("historyNote");
+    note_->setStyleSheet("QLabel{color:#b3261e;font-weight:bold}");
+    note_->setWordWrap(true);
+    note_->hide();
+    layout->addWidget(note_, 1);
+    noteTimer_ = new QTimer(this);
+    noteTimer_->setSingleShot(true);
+    noteTimer_->setInterval(8000);
+    connect(noteTimer_, &QTimer::timeout, note_, &QWidget::hide);
 
     layout->addWidget(new QLabel(tr("Go to step")));
     stepBox_ = new QSpinBox;
@@ -56,11 +67,14 @@ HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
     goButton_->setObjectName("goToStepButton");
     goButton_->setFocusPolicy(Qt::TabFocus);
     connect(goButton_, &QPushButton::clicked, this, [this] {
+        note_->hide();
         stepBox_->interpretText();
         emit stepRequested(stepBox_->value());
     });
     connect(stepBox_, &QSpinBox::editingFinished, this, [this] {
-        if (stepBox_->hasFocus()) emit stepRequested(stepBox_->value());
+        if (!stepBox_->hasFocus()) return;
+        note_->hide();
+        emit stepRequested(stepBox_->value());
     });
     layout->addWidget(goButton_);
     stepBox_->installEventFilter(this);
@@ -88,24 +102,37 @@ void HistoryScrubber::sync()
         label_->setText(tr("no steps yet"));
         return;
     }
+    // After a blow-up the world is one step past the last kept state (its numbers are
+    // not results): the scrubber shows the kept state the run stopped after.
+    const bool blownUp = !world->status().ok && world->stepIndex() != h.current().state.stepIndex;
+    const long shown = blownUp ? h.current().state.stepIndex : world->stepIndex();
     syncing_ = true;
     {
         const QSignalBlocker block(slider_);
         const int first = static_cast<int>(std::min<long>(h.firstStep(), INT_MAX));
         const int last = static_cast<int>(std::min<long>(h.lastStep(), INT_MAX));
         slider_->setRange(first, last);
-        slider_->setValue(static_cast<int>(std::min<long>(world->stepIndex(), INT_MAX)));
+        slider_->setValue(static_cast<int>(std::min<long>(shown, INT_MAX)));
         slider_->setPageStep(std::max(1, (last - first) / 20));
     }
     syncing_ = false;
     // The box shows the current step, unless the student is typing one.
     if (!stepBox_->hasFocus()) {
         const QSignalBlocker block(stepBox_);
-        stepBox_->setValue(static_cast<int>(std::min<long>(world->stepIndex(), stepBox_->maximum())));
+        stepBox_->setValue(static_cast<int>(std::min<long>(shown, stepBox_->maximum())));
     }
-    QString text = tr("step %1 of %2").arg(world->stepIndex()).arg(h.lastStep());
+    QString text = tr("step %1 of %2").arg(shown).arg(h.lastStep());
     if (h.firstStep() > 0) text += tr(" (from %1)").arg(h.firstStep());
+    if (blownUp) text += tr(" · the next step blew up");
     label_->setText(text);
+}
+
+void HistoryScrubber::showNote(const QString& text)
+{
+    note_->setText(text);
+    note_->setToolTip(text);
+    note_->show();
+    noteTimer_->start();
 }
 
 void HistoryScrubber::onSliderValueChanged(int value)

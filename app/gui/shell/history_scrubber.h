@@ -4,7 +4,9 @@
 // (Session::goToStep restores them; nothing is recomputed). A step beyond the
 // newest recorded one is reached by stepping on. Taking a step (or playing) from
 // an earlier step discards the later history, as typing after an undo drops the
-// redo; the slider then ends at the current step.
+// redo; the slider then ends at the current step. After a blow-up the world has
+// gone one step past the last kept state: the label says "step 5 of 5 · the next step
+// blew up" (never "step 6 of 5") and the slider stays on the last kept step.
 #pragma once
 
 #include <QWidget>
@@ -13,6 +15,7 @@ class QLabel;
 class QPushButton;
 class QSlider;
 class QSpinBox;
+class QTimer;
 
 namespace rbw {
 
@@ -26,11 +29,15 @@ public:
     // Follows the session: the slider's range is the recorded history, its value the
     // current step. Cheap; the main window calls it when the state changed.
     void sync();
+    // A note beside the slider for a few seconds: why "Go to step" did not go (a step
+    // no longer kept, a step not reached). Cleared by the next request.
+    void showNote(const QString& text);
 
     QSlider* slider() const { return slider_; }
     QSpinBox* stepBox() const { return stepBox_; }
     QPushButton* goButton() const { return goButton_; }
     QLabel* label() const { return label_; }
+    QLabel* note() const { return note_; }
 
 signals:
     // The student asked for step k (slider or Go). The main window stops playing and
@@ -48,6 +55,8 @@ private:
     Session* session_;
     QSlider* slider_ = nullptr;
     QLabel* label_ = nullptr;
+    QLabel* note_ = nullptr;
+    QTimer* noteTimer_ = nullptr;
     QSpinBox* stepBox_ = nullptr;
     QPushButton* goButton_ = nullptr;
     bool syncing_ = false;

@@ -6,6 +6,7 @@
 // falls back to lesson 1.
 // --version and --help print and exit before any window exists, so they need no display.
 #include "app/core/lesson_catalogue.h"
+#include "app/core/step_run.h"
 #include "app/scene/scene_loader.h"
 #include "app/gui/shell/app_settings.h"
 #include "app/gui/shell/main_window.h"
@@ -17,6 +18,7 @@
 #include <QSurfaceFormat>
 
 #include <cstdio>
+#include <cstdlib>
 
 namespace {
 
@@ -127,5 +129,14 @@ int main(int argc, char* argv[])
         auto* probe = new rbw::PerformanceProbe(&window, parser.value("measure").toDouble(), &window);
         probe->start();
     }
-    return app.exec();
+    const int status = app.exec();
+    if (rbw::StepRun::running() > 0) {
+        // Quit while a step was being computed (cancelled at close): its thread cannot be
+        // stopped inside the step, so leave without waiting for it (Quit always quits).
+        // The settings are written already (each QSettings syncs when it goes).
+        std::fflush(stdout);
+        std::fflush(stderr);
+        std::_Exit(status);
+    }
+    return status;
 }

@@ -19,6 +19,7 @@
 #include "app/gui/shell/keys_dialog.h"
 #include "app/gui/shell/parameter_bar.h"
 #include "app/gui/shell/quantity_table_actions.h"
+#include "app/gui/shell/run_busy_bar.h"
 #include "app/gui/shell/scene_file_flows.h"
 #include "app/gui/shell/scene_files.h"
 #include "app/gui/shell/shell_actions.h"
@@ -82,6 +83,8 @@ MainWindow::MainWindow(QWidget* parent)
     centreLayout->addWidget(sceneView_, 1);
     sceneEnd_ = new SceneEndBar(&session_);   // Play stops at the scene's steps
     centreLayout->addWidget(sceneEnd_);
+    busyBar_ = new RunBusyBar(&session_);
+    centreLayout->addWidget(busyBar_);
     centreLayout->addWidget(scrubber_);
     setCentralWidget(centre);
     connect(scrubber_, &HistoryScrubber::stepRequested, this, &MainWindow::goToStep);
@@ -146,6 +149,11 @@ MainWindow::MainWindow(QWidget* parent)
         refresh_.mark(RefreshScheduler::All);
     });
     connect(&session_, &Session::stateChanged, this, &MainWindow::onStateChanged);
+    connect(&session_, &Session::runFinished, this, &MainWindow::onRunFinished);
+    connect(busyBar_, &RunBusyBar::cancelled, this, [this](long k) {
+        setPlaying(false);
+        statusBar()->showMessage(tr("Cancelled: the scene is at step %1, the last finished step").arg(k), 6000);
+    });
     connect(&session_, &Session::blownUp, this, [this](const QString& message) {
         setPlaying(false);
         alertLabel_->setText(tr("The run stopped: %1").arg(message));
@@ -192,6 +200,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         event->ignore();
         return;
     }
+    session_.cancelRun();   // a step being computed never holds Quit up (main() leaves without it)
     AppSettings::setWindowLayout(saveGeometry(), saveState(AppSettings::kLayoutVersion));
     if (!currentLessonId().isEmpty()) AppSettings::setLastLesson(currentLessonId());
     QMainWindow::closeEvent(event);
@@ -363,7 +372,8 @@ void MainWindow::refreshDerivation()
 void MainWindow::stepOnce()
 {
     setPlaying(false);
-    session_.step();
+    if (session_.busy()) statusBar()->showMessage(tr("Still computing the step: wait, or Cancel it"), 3000);
+    else session_.startRun(1, 0.0, busyBar_->stepWaitMs());   // off the GUI thread (RunBusyBar)
 }
 
 void MainWindow::stepBack()
@@ -390,12 +400,11 @@ bool MainWindow::goToStep(long k)
     QApplication::restoreOverrideCursor();
     if (reached) {
         alertLabel_->setVisible(!session_.status().ok);
-    } else if (k < session_.history().firstStep()) {
-        statusBar()->showMessage(tr("Step %1 is no longer recorded: the history keeps the last %2 steps (up to 1000, fewer for many bodies)")
-                                     .arg(k)
-                                     .arg(session_.history().size() - 1), 4000);
+    } else if (k < session_.history().firstStep()) {   // said beside the slider, where it was asked
+        scrubber_->showNote(tr("Step %1 is no longer kept: the history keeps the last %2 steps (from step %3)")
+                                .arg(k).arg(session_.history().size() - 1).arg(session_.history().firstStep()));
     } else {
-        statusBar()->showMessage(tr("Step %1 not reached: stopped at step %2").arg(k).arg(session_.world()->stepIndex()), 4000);
+        scrubber_->showNote(tr("Step %1 not reached: the run stopped at step %2").arg(k).arg(session_.history().current().state.stepIndex));
     }
     scrubber_->sync();
     // After Go (or Enter in the step box) the keys step and play again.
@@ -424,14 +433,18 @@ void MainWindow::setPlaying(bool playing)
 void MainWindow::onPlayTick()
 {
     const World* world = session_.world();
-    if (world == nullptr) return;
-    const double h = world->scene().dt;
+    if (world == nullptr || session_.busy()) return;   // a tick's run still computes: this tick takes none
     // No step past the scene's end (SceneEndBar), then stop there if it was reached.
-    const int due = sceneEnd_->stepsAllowed(clock_.stepsDue(h));
-    if (due > 0) {
-        const int taken = session_.advance(due, clock_.budgetMs());
-        clock_.stepsTaken(due, taken, h);
+    playDue_ = sceneEnd_->stepsAllowed(clock_.stepsDue(world->scene().dt));
+    if (playDue_ == 0 || session_.startRun(playDue_, clock_.budgetMs(), busyBar_->playWaitMs()) == Session::RunStart::Refused) {
+        sceneEnd_->checkEnd();
     }
+}
+
+void MainWindow::onRunFinished(int taken)
+{
+    if (!playTimer_->isActive() || session_.world() == nullptr) return;
+    clock_.stepsTaken(playDue_, taken, session_.world()->scene().dt);
     sceneEnd_->checkEnd();
 }
 

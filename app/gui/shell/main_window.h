@@ -27,6 +27,7 @@ class QTreeView;
 namespace rbw {
 
 class SceneEndBar;
+class RunBusyBar;
 
 class AccuracyPanel;
 class BodyPlotPanel;
@@ -90,6 +91,7 @@ public:
     CheckPanel* checkPanel() const { return docks_.checkPanel; }
     ParameterBar* parameterBar() const { return parameterBar_; }
     HistoryScrubber* historyScrubber() const { return scrubber_; }
+    RunBusyBar* runBusyBar() const { return busyBar_; }
     // Plots the quantity of a row of the quantities table (its components, or the
     // length with norm); false (with a note in the status bar) for a group row.
     bool plotRowOverTime(const QModelIndex& row, bool norm = false);
@@ -135,12 +137,15 @@ private:
     void onStepRecorded(const StepTrace& trace);
     void onStateChanged();
     void onPlayTick();
+    void onRunFinished(int taken);
     void updateStatus();
     void updateCheckPanel();
 
     Session session_;
     LessonController* lessons_ = nullptr;
     SceneEndBar* sceneEnd_ = nullptr;
+    RunBusyBar* busyBar_ = nullptr;   // a step computed off the GUI thread: busy, Cancel
+    int playDue_ = 0;                 // the steps the running tick of Play asked for
     TraceModel* traceModel_ = nullptr;
     SceneView* sceneView_ = nullptr;
     ShellDocks docks_;

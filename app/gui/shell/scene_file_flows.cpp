@@ -23,6 +23,11 @@ SceneFileFlows::SceneFileFlows(const Parts& parts)
     p_.window->setAcceptDrops(true);   // a .json dropped anywhere on the window (SceneFiles takes it)
     connect(p_.files, &SceneFiles::openRequested, this, &SceneFileFlows::openAsked);
     connect(p_.editor, &SceneEditor::modifiedChanged, p_.window, &QWidget::setWindowModified);
+    // The editor's dock and its tab mark unsaved edits too, as the window's title does
+    // (issue 22 item 6, issue 20 item 7).
+    connect(p_.editor, &SceneEditor::modifiedChanged, p_.editorDock, [dock = p_.editorDock](bool modified) {
+        dock->setWindowTitle(modified ? tr("Scene editor *") : tr("Scene editor"));
+    });
     connect(p_.files, &SceneFiles::watchedFileChanged, this, &SceneFileFlows::reloadWatchedFile);
     connect(p_.editor, &SceneEditor::applyRequested, p_.lessons,
             [this](const SceneDef& scene) { p_.lessons->applyEditedScene(scene, p_.editor->filePath()); });

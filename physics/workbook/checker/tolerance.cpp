@@ -38,6 +38,9 @@ bool matchesWithin(const Values& given, const Values& ref, double tol, const Val
     auto within = [&](double sign) {
         for (size_t i = 0; i < ref.size(); ++i) {
             const double allowed = tol + (extra.empty() ? 0.0 : extra[i]);
+            // An infinite reference or tolerance (a denominator near zero upstream:
+            // 1.8e8 / 1e-300 overflows) would take every number: it matches none.
+            if (!std::isfinite(ref[i]) || !std::isfinite(allowed)) return false;
             if (!(std::abs(given[i] - sign * ref[i]) <= allowed)) return false;
         }
         return true;

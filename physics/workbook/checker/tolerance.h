@@ -25,6 +25,8 @@ Values flatMat(const Mat3& m);
 double maxAbs(const Values& v);
 
 // |given_i - ref_i| <= tol + extra_i for every i (a quaternion also against -ref).
+// Never when a reference component or its tolerance is not finite: a value recomputed
+// through a denominator near zero (1.8e8 / 1e-300 = inf) matches no answer (issue 22).
 bool matchesWithin(const Values& given, const Values& ref, double tol, const Values& extra = {});
 // The check's tolerance: tol = rel * max|ref|.
 bool matches(const Values& given, const Values& ref, double rel, const Values& extra = {});

@@ -22,6 +22,11 @@
 #include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QTemporaryDir>
 
 using namespace rbw;
 using namespace rbw::test;
@@ -36,6 +41,8 @@ private slots:
     void keysReturnToTheViewAfterEditing_data();
     void keysReturnToTheViewAfterEditing();
     void keysReturnToTheViewAfterEditingH();
+    void afterABlowUp();
+    void aStepNoLongerKeptIsSaid();
 };
 
 void TestHistoryScrubber::initTestCase()
@@ -227,6 +234,83 @@ void TestHistoryScrubber::keysReturnToTheViewAfterEditingH()
     QCOMPARE(w.world()->scene().dt, 0.02);
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_S);
     QCOMPARE(w.world()->stepIndex(), 1L);
+}
+
+
+// Lesson 1 with a force of 1e153 N at the centre in every step (x0 = 0, so the point
+// (0, 0, 0) is the centre: no torque) and the energy-jump check off: v grows by
+// h F / M = 1e153 m/s a step and the kinetic energy M v²/2 = v² overflows once
+// v > 1.34e154, in step 13 (v_14 = 1.4e154); steps 0..12 are kept. After the blow-up
+// the world is at step 14 (its numbers are not results) and the history ends at 13:
+// the scrubber said "step 14 of 13" (issue 20, item 7).
+void TestHistoryScrubber::afterABlowUp()
+{
+    QTemporaryDir dir;
+    QFile lesson(QStringLiteral(RBW_SOURCE_DIR "/lessons/01-one-step/scene.json"));
+    QVERIFY(lesson.open(QIODevice::ReadOnly));
+    QJsonObject scene = QJsonDocument::fromJson(lesson.readAll()).object();
+    scene.insert("forces", QJsonArray{QJsonObject{{"body", "box"},
+                                                  {"point", QJsonArray{0, 0, 0}},
+                                                  {"force", QJsonArray{1e153, 0, 0}},
+                                                  {"from_step", 0},
+                                                  {"to_step", 100}}});
+    scene.insert("energy_jump", QJsonObject{{"factor", 0}});
+    QFile out(dir.filePath("blows.json"));
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(QJsonDocument(scene).toJson());
+    out.close();
+
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openSceneFile(out.fileName()));
+    HistoryScrubber* scrubber = w.historyScrubber();
+    for (int i = 0; i < 40 && w.world()->status().ok; ++i) {
+        w.stepOnce();
+        // negative control: until the blow-up the label is the world's step
+        if (w.world()->status().ok) QCOMPARE(scrubber->label()->text(), QStringLiteral("step %1 of %1").arg(w.world()->stepIndex()));
+    }
+    QVERIFY(!w.world()->status().ok);
+    const long kept = w.session()->history().lastStep();
+    QCOMPARE(kept, 13L);
+    QCOMPARE(w.world()->stepIndex(), kept + 1);
+    QCOMPARE(scrubber->label()->text(), QStringLiteral("step 13 of 13 · the next step blew up"));
+    QCOMPARE(scrubber->slider()->value(), 13);
+    QCOMPARE(scrubber->stepBox()->value(), 13);
+    // Go to a kept step: the state there, and the run may go on from it.
+    scrubber->stepBox()->setValue(5);
+    QTest::mouseClick(scrubber->goButton(), Qt::LeftButton);
+    QCOMPARE(w.world()->stepIndex(), 5L);
+    QVERIFY(w.world()->status().ok);
+    QCOMPARE(scrubber->label()->text(), QStringLiteral("step 5 of 13"));
+}
+
+// Lesson 1 (one box) keeps the last 1000 steps: after 1100, steps 0..99 are gone.
+// "Go to step 3" says so beside the slider, and the world stays where it is.
+void TestHistoryScrubber::aStepNoLongerKeptIsSaid()
+{
+    MainWindow w;
+    w.resize(1366, 768);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openLesson("01-one-step"));
+    QCOMPARE(w.session()->advance(1100, 1e9), 1100);
+    HistoryScrubber* scrubber = w.historyScrubber();
+    QCOMPARE(w.session()->history().firstStep(), 100L);
+    QCOMPARE(scrubber->label()->text(), QStringLiteral("step 1100 of 1100 (from 100)"));
+    QVERIFY(!scrubber->note()->isVisible());
+    scrubber->stepBox()->setValue(3);
+    QTest::mouseClick(scrubber->goButton(), Qt::LeftButton);
+    QCOMPARE(w.world()->stepIndex(), 1100L);
+    QVERIFY(scrubber->note()->isVisible());
+    QCOMPARE(scrubber->note()->text(), QStringLiteral("Step 3 is no longer kept: the history keeps the last 1000 steps (from step 100)"));
+    QVERIFY(scrubber->note()->width() >= scrubber->note()->fontMetrics().horizontalAdvance("Step 3 is no longer kept") ||
+            scrubber->note()->height() > scrubber->note()->fontMetrics().height());   // on screen, not squeezed away
+    // A kept step goes, and the note goes with the new request.
+    scrubber->stepBox()->setValue(500);
+    QTest::mouseClick(scrubber->goButton(), Qt::LeftButton);
+    QCOMPARE(w.world()->stepIndex(), 500L);
+    QVERIFY(!scrubber->note()->isVisible());
 }
 
 RBW_WINDOW_TEST_MAIN(TestHistoryScrubber)

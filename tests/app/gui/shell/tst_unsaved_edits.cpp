@@ -11,6 +11,9 @@
 
 #include <QAbstractButton>
 #include <QAction>
+#include <QDockWidget>
+#include <QTabBar>
+#include <QWindow>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -170,6 +173,46 @@ private slots:
             QVERIFY(w.currentScenePath() != QFileInfo(path).absoluteFilePath() || action == "new");
             if (action == "new") QVERIFY(w.currentSceneTitle().startsWith("My "));
         }
+    }
+
+    // The editor's dock and its tab carry the mark as the window's title does (issue 22
+    // item 6: "the editor marks unsaved edits (title and tab)"); Save takes it away.
+    void editorDockAndTabMarkEdits()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("mine.json");
+        writeScene(path, 2.0);
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openSceneFile(path));
+        auto* dock = w.findChild<QDockWidget*>("sceneEditorDock");
+        QVERIFY(dock != nullptr);
+        // The tab that shows the editor's dock (it is tabbed with the quantities).
+        auto editorTab = [&w]() -> QString {
+            for (QTabBar* bar : w.findChildren<QTabBar*>()) {
+                for (int i = 0; i < bar->count(); ++i) {
+                    if (bar->tabText(i).startsWith("Scene editor")) return bar->tabText(i);
+                }
+            }
+            return {};
+        };
+        // negative control: nothing marked before an edit
+        QCOMPARE(dock->windowTitle(), QStringLiteral("Scene editor"));
+        QCOMPARE(editorTab(), QStringLiteral("Scene editor"));
+        QVERIFY(!w.windowHandle()->title().contains('*'));
+
+        SceneEditorModel* model = w.sceneEditor()->model();
+        QVERIFY(model->setData(model->indexOfPath("bodies[0].mass"), "3"));
+        QCOMPARE(dock->windowTitle(), QStringLiteral("Scene editor *"));
+        QTRY_COMPARE(editorTab(), QStringLiteral("Scene editor *"));
+        // The window's title as the desktop shows it: Qt puts "*" for "[*]".
+        QVERIFY2(w.windowHandle()->title().startsWith("Mine (mine.json)*"), qPrintable(w.windowHandle()->title()));
+
+        QVERIFY(w.saveScene());
+        QCOMPARE(dock->windowTitle(), QStringLiteral("Scene editor"));
+        QTRY_COMPARE(editorTab(), QStringLiteral("Scene editor"));
+        QVERIFY(!w.windowHandle()->title().contains('*'));
     }
 };
 

@@ -1,0 +1,227 @@
+// The app stays responsive on a heavy step (issue 22, item 4): issue 22's freeze was
+// one Step on a pile of coincident boxes in the manifold model (n² work in one step)
+// with the window frozen and Ctrl+Q ignored. Now the step runs off the GUI thread
+// (Session::startRun) and, here:
+//  - Step on a pile shows the busy bar, the window answers (a timer fires, the
+//    history syncs, a second Step says it is still computing), and Cancel leaves the
+//    world exactly at the last finished step, also after the abandoned run has ended;
+//  - Play, then Cancel while a run computes: playing stops, the world is at the step
+//    shown when Cancel was clicked, the history's current entry, bit for bit;
+//  - Quit (the Quit action, Ctrl+Q) while a step computes closes the window at once:
+//    the step's thread is still held when the window is gone;
+//  - a step that is not cancelled is recorded when it finishes, the same numbers as
+//    the session's own step().
+// A step "that has not finished" is made certain with StepRun::HoldForTest (every run
+// waits before its first step while it lives) and the busy bar's waits set to 0 ms,
+// whatever the machine's speed: one step of a 200-box pile takes about 0.25 s here.
+#include "app/gui/shell/history_scrubber.h"
+#include "app/gui/shell/main_window.h"
+#include "app/gui/shell/run_busy_bar.h"
+#include "tests/app/gui/shell/window_test_support.h"
+
+#include <QAction>
+#include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace rbw;
+
+namespace {
+
+// n unit boxes in one place, on a ground plane, in the manifold model.
+QString writePile(const QString& path, int n)
+{
+    QJsonArray bodies;
+    for (int i = 0; i < n; ++i) {
+        bodies.append(QJsonObject{{"name", QStringLiteral("b%1").arg(i)},
+                                  {"size", QJsonArray{1, 1, 1}},
+                                  {"mass", 1},
+                                  {"position", QJsonArray{0, 0.6, 0}}});
+    }
+    const QJsonObject scene{{"name", "Pile"},
+                            {"dt", 1.0 / 60.0},
+                            {"steps", 60},
+                            {"integrator", "symplectic-euler"},
+                            {"gravity", QJsonArray{0, -9.81, 0}},
+                            {"contact_model", "manifold"},
+                            {"planes", QJsonArray{QJsonObject{{"name", "ground"},
+                                                              {"point", QJsonArray{0, 0, 0}},
+                                                              {"normal", QJsonArray{0, 1, 0}}}}},
+                            {"bodies", bodies}};
+    QFile out(path);
+    if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate)) return {};
+    out.write(QJsonDocument(scene).toJson(QJsonDocument::Compact));
+    return path;
+}
+
+bool sameSnapshot(const WorldSnapshot& a, const WorldSnapshot& b)
+{
+    if (a.stepIndex != b.stepIndex || a.time != b.time || a.states.size() != b.states.size()) return false;
+    for (std::size_t i = 0; i < a.states.size(); ++i) {
+        if (a.states[i].x_W != b.states[i].x_W || a.states[i].v_W != b.states[i].v_W ||
+            a.states[i].q_WB.coeffs() != b.states[i].q_WB.coeffs() || a.states[i].L_W != b.states[i].L_W) {
+            return false;
+        }
+    }
+    return true;
+}
+
+constexpr int kPile = 200;
+
+} // namespace
+
+class TestResponsive : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+        QVERIFY(dir_.isValid());
+        QVERIFY(!writePile(dir_.filePath("pile.json"), kPile).isEmpty());
+    }
+    void cleanupTestCase() { QVERIFY(StepRun::waitForAll(120000)); }
+
+    void stepThenCancel();
+    void playThenCancel();
+    void quitDuringAStep();
+    void aStepNotCancelledIsRecorded();
+
+private:
+    // A window on a scene file whose runs never wait (see the top).
+    void open(MainWindow& w, const QString& scene)
+    {
+        w.resize(1366, 768);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openSceneFile(scene));
+        w.runBusyBar()->setWaitMs(0, 0);
+    }
+
+    QTemporaryDir dir_;
+};
+
+void TestResponsive::stepThenCancel()
+{
+    MainWindow w;
+    open(w, dir_.filePath("pile.json"));
+    const WorldSnapshot start = w.world()->snapshot();
+    {
+        const StepRun::HoldForTest hold;
+        w.findChild<QAction*>("actionStep")->trigger();
+        QVERIFY(w.session()->busy());
+        QVERIFY(w.runBusyBar()->isVisible());
+        QVERIFY2(w.runBusyBar()->label()->text().contains("Computing the next step"),
+                 qPrintable(w.runBusyBar()->label()->text()));
+        // The window answers: a timer fires; the history shows the last finished step.
+        bool answered = false;
+        QTimer::singleShot(0, &w, [&] { answered = true; });
+        QTRY_VERIFY_WITH_TIMEOUT(answered, 3000);
+        QVERIFY(w.session()->busy());
+        w.historyScrubber()->sync();
+        QCOMPARE(w.historyScrubber()->label()->text(), QStringLiteral("step 0 of 0"));
+        // A second Step while it computes is not queued: it says so.
+        w.findChild<QAction*>("actionStep")->trigger();
+        QVERIFY(w.statusBar()->currentMessage().contains("Still computing"));
+
+        QTest::mouseClick(w.runBusyBar()->cancelButton(), Qt::LeftButton);
+        QVERIFY(!w.session()->busy());
+        QVERIFY(!w.runBusyBar()->isVisible());
+        QVERIFY(sameSnapshot(w.world()->snapshot(), start));
+        QVERIFY2(w.statusBar()->currentMessage().contains("Cancelled: the scene is at step 0"),
+                 qPrintable(w.statusBar()->currentMessage()));
+    }
+    // The abandoned run ends and is dropped.
+    QVERIFY(StepRun::waitForAll(120000));
+    QTest::qWait(50);
+    QVERIFY(sameSnapshot(w.world()->snapshot(), start));
+    QCOMPARE(w.session()->history().size(), std::size_t(1));
+    QVERIFY(w.session()->currentTrace() == nullptr);
+}
+
+void TestResponsive::playThenCancel()
+{
+    MainWindow w;
+    open(w, QStringLiteral(RBW_SOURCE_DIR "/lessons/04-many-boxes/scene.json"));
+    // Cancel when the third run of Play starts computing (two have been recorded by
+    // then), clicked as the student would: the run is certainly unfinished then.
+    int runs = 0;
+    long stepAtCancel = -1;
+    connect(w.session(), &Session::busyChanged, &w, [&](bool busy) {
+        if (!busy || ++runs != 3) return;
+        QVERIFY(w.runBusyBar()->isVisible());
+        stepAtCancel = w.world()->stepIndex();
+        QTest::mouseClick(w.runBusyBar()->cancelButton(), Qt::LeftButton);
+    });
+    w.findChild<QAction*>("actionPlay")->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(runs >= 3, 60000);
+    QVERIFY(!w.findChild<QAction*>("actionPlay")->isChecked());
+    QVERIFY(!w.session()->busy());
+    QVERIFY(stepAtCancel >= 2);   // at least one step from each of the two recorded runs
+    QVERIFY(StepRun::waitForAll(120000));
+    QTest::qWait(50);
+    // A finished step: the one shown when Cancel was clicked, the history's current
+    // entry, bit for bit, and nothing after it.
+    const StepHistory& h = w.session()->history();
+    QCOMPARE(w.world()->stepIndex(), stepAtCancel);
+    QCOMPARE(h.lastStep(), stepAtCancel);
+    QVERIFY(sameSnapshot(w.world()->snapshot(), h.current().state));
+    QVERIFY(w.world()->status().ok);
+}
+
+void TestResponsive::quitDuringAStep()
+{
+    MainWindow w;
+    open(w, dir_.filePath("pile.json"));
+    {
+        const StepRun::HoldForTest hold;
+        w.findChild<QAction*>("actionStep")->trigger();
+        QVERIFY(w.session()->busy());
+        w.findChild<QAction*>("actionQuit")->trigger();   // Ctrl+Q
+        // Closed while the step's thread is held: Quit did not wait for it (had it
+        // waited, this line would never come).
+        QVERIFY(!w.isVisible());
+        QVERIFY(!w.session()->busy());
+        QCOMPARE(StepRun::running(), 1);
+        QCOMPARE(w.world()->stepIndex(), 0L);
+    }
+    QVERIFY(StepRun::waitForAll(120000));
+}
+
+void TestResponsive::aStepNotCancelledIsRecorded()
+{
+    MainWindow w;
+    open(w, QStringLiteral(RBW_SOURCE_DIR "/lessons/04-many-boxes/scene.json"));
+    QSignalSpy finished(w.session(), &Session::runFinished);
+    {
+        const StepRun::HoldForTest hold;
+        w.findChild<QAction*>("actionStep")->trigger();
+        QVERIFY(w.session()->busy());
+        QTest::qWait(100);
+        QCOMPARE(w.world()->stepIndex(), 0L);   // nothing recorded while it computes
+        QCOMPARE(finished.count(), 0);
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(!w.session()->busy(), 120000);
+    QCOMPARE(finished.count(), 1);
+    QCOMPARE(w.world()->stepIndex(), 1L);
+    QVERIFY(!w.runBusyBar()->isVisible());
+    QCOMPARE(w.historyScrubber()->label()->text(), QStringLiteral("step 1 of 1"));
+    // The numbers are the session's own step's.
+    Session direct;
+    direct.load(w.world()->scene());
+    QVERIFY(direct.step());
+    QVERIFY(sameSnapshot(w.world()->snapshot(), direct.world()->snapshot()));
+    QCOMPARE(w.session()->currentTrace()->diagnostics.total, direct.currentTrace()->diagnostics.total);
+}
+
+RBW_WINDOW_TEST_MAIN(TestResponsive)
+
+#include "tst_responsive.moc"
