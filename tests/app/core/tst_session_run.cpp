@@ -39,6 +39,11 @@ bool sameSnapshot(const WorldSnapshot& a, const WorldSnapshot& b)
 // pair overlaps, so one step does n² work (n = 300: 1.4 s before the piles
 // were capped; whatever it costs, the tests below do not depend on how long it takes,
 // only the first waits 0 ms for it).
+// n = 60: the manifold model's work limits (physics/engine/manifold/work_limits.h) stop
+// a step whose broad phase finds more than 32 n + 128 pairs; n coincident boxes have
+// n (n - 1) / 2 pairs, within the limit up to n = 68, so 60 boxes step in full.
+constexpr int kPile = 60;
+
 SceneDef coincidentPile(int n)
 {
     SceneDef s;
@@ -124,7 +129,7 @@ void TestSessionRun::runRecordsWhatStepRecords()
 void TestSessionRun::runningStepLeavesTheEventLoopFree()
 {
     Session session;
-    session.load(coincidentPile(150));
+    session.load(coincidentPile(kPile));
     const WorldSnapshot before = session.world()->snapshot();
     QSignalSpy busy(&session, &Session::busyChanged);
     QSignalSpy finished(&session, &Session::runFinished);
@@ -152,7 +157,7 @@ void TestSessionRun::runningStepLeavesTheEventLoopFree()
 
     // The same step taken directly: bit for bit what the thread computed.
     Session direct;
-    direct.load(coincidentPile(150));
+    direct.load(coincidentPile(kPile));
     QVERIFY(direct.step());
     QVERIFY(sameSnapshot(session.world()->snapshot(), direct.world()->snapshot()));
 }
@@ -160,7 +165,7 @@ void TestSessionRun::runningStepLeavesTheEventLoopFree()
 void TestSessionRun::cancelLeavesTheLastFinishedStep()
 {
     Session session;
-    session.load(coincidentPile(150));
+    session.load(coincidentPile(kPile));
     QVERIFY(session.step());   // step 1 finished (directly)
     const WorldSnapshot atOne = session.world()->snapshot();
     QSignalSpy recorded(&session, &Session::stepRecorded);
@@ -184,7 +189,7 @@ void TestSessionRun::cancelLeavesTheLastFinishedStep()
     // And stepping on from there is the same step as without the cancelled run.
     QVERIFY(session.step());
     Session direct;
-    direct.load(coincidentPile(150));
+    direct.load(coincidentPile(kPile));
     QVERIFY(direct.step());
     QVERIFY(direct.step());
     QVERIFY(sameSnapshot(session.world()->snapshot(), direct.world()->snapshot()));
@@ -194,7 +199,7 @@ void TestSessionRun::cancelledRunKeepsItsPushes()
 {
     // A push queued before a cancelled run acts in the next step that is taken, not in
     // the dropped one: the same state as a push and one step without the run.
-    const SceneDef def = coincidentPile(150);
+    const SceneDef def = coincidentPile(kPile);
     Session session;
     session.load(def);
     QVERIFY(session.push(Vec3(1.0, 0.0, 0.0)));
@@ -222,7 +227,7 @@ void TestSessionRun::cancelledRunKeepsItsPushes()
 void TestSessionRun::everyChangeCancelsTheRun()
 {
     Session session;
-    session.load(coincidentPile(150));
+    session.load(coincidentPile(kPile));
     {
         const StepRun::HoldForTest hold;
         QCOMPARE(session.startRun(1, 0.0, 0), Session::RunStart::Running);
