@@ -54,8 +54,8 @@ QString tableOf(const QString& title, const QJsonArray& items)
     }
     // Full width, the labels' column wide enough for "restitution threshold": a PDF
     // table is laid out by QTextDocument, which squeezes columns to their narrowest.
-    const int itemWidth = static_cast<int>(82 / items.size());
-    QString html = "<h3>" + title.toHtmlEscaped() + "</h3>\n<table width=\"100%\" style=\"font-size:9pt\">\n<tr><th width=\"18%\"></th>";
+    const int itemWidth = static_cast<int>(78 / items.size());
+    QString html = "<h3>" + title.toHtmlEscaped() + "</h3>\n<table width=\"100%\" style=\"font-size:9pt\">\n<tr><th width=\"22%\"></th>";
     for (qsizetype i = 0; i < items.size(); ++i) {
         const QString name = items[i].toObject().value(QLatin1String("name")).toString();
         html += "<th width=\"" + QString::number(itemWidth) + "%\">" + (name.isEmpty() ? QString::number(i) : name).toHtmlEscaped() + "</th>";
