@@ -110,11 +110,6 @@ Score scoreOf(const FileResult& f)
     return s;
 }
 
-bool allRight(const std::vector<AnswerResult>& results)
-{
-    return std::all_of(results.begin(), results.end(), [](const AnswerResult& r) { return countsAsCorrect(r.verdict); });
-}
-
 } // namespace
 
 int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, const QStringList& answerPaths)
@@ -198,12 +193,7 @@ int runCheckCommand(const QCommandLineParser& parser, const QString& scenePath, 
         fr.results = checkAnswers(*states.worldBefore(fr.step), states.trace(fr.step), fr.answers, tolerance);
         for (size_t i = 0; i < fr.answers.size(); ++i) fr.hints.push_back(slipHint(fr.answers[i], fr.results[i], tolerance));
         // Not all right here, every answer right one step earlier: steps counted from 1.
-        const long earlier = fr.step - 1;
-        if (fr.step > 0 && !allRight(fr.results) && states.has(earlier) && answersProblems(in, states.trace(earlier), scene, fr.file).isEmpty() &&
-            allRight(checkAnswers(*states.worldBefore(earlier), states.trace(earlier), fr.answers, tolerance))) {
-            fr.stepHint = QStringLiteral("steps count from 0: did you mean step %1? (every answer is right for step %1)")
-                              .arg(earlier);
-        }
+        fr.stepHint = stepSlipHint(fr.answers, fr.results, fr.step, states, tolerance);
     }
     int errorStatus = 0;
     for (const FileResult& f : files) {

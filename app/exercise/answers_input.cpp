@@ -203,4 +203,20 @@ QString slipHint(const Answer& a, const AnswerResult& r, double tolerance)
     return QStringLiteral("quaternions are [w, x, y, z]: your numbers are right in the order [x, y, z, w]");
 }
 
+QString stepSlipHint(const std::vector<Answer>& answers, const std::vector<AnswerResult>& results, long step,
+                     const StepStates& states, double tolerance)
+{
+    const auto allRight = [](const std::vector<AnswerResult>& rs) {
+        return std::all_of(rs.begin(), rs.end(), [](const AnswerResult& r) { return countsAsCorrect(r.verdict); });
+    };
+    const long earlier = step - 1;
+    if (step <= 0 || answers.empty() || allRight(results) || !states.has(earlier)) return {};
+    const StepTrace& trace = states.trace(earlier);
+    for (const Answer& a : answers) {
+        if (!answerProblem(trace, a).empty()) return {};
+    }
+    if (!allRight(checkAnswers(*states.worldBefore(earlier), trace, answers, tolerance))) return {};
+    return QStringLiteral("steps count from 0: did you mean step %1? (every answer is right for step %1)").arg(earlier);
+}
+
 } // namespace rbw

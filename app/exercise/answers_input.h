@@ -9,8 +9,8 @@
 //   - each answer against the trace of its step (answerProblem), with a hint for the
 //     slips students make: a probe index missing or counted per body.
 // StepStates simulates a scene once for a whole marking sheet: the world before each
-// asked step and that step's trace. slipHint() names the input slips a checked answer
-// shows (a quaternion written [x, y, z, w], steps counted from 1).
+// asked step and that step's trace. slipHint() and stepSlipHint() name the input slips
+// checked answers show (a quaternion written [x, y, z, w], steps counted from 1).
 #pragma once
 
 #include "app/exercise/answers_file.h"
@@ -77,5 +77,12 @@ private:
 // A hint for a checked answer that shows an input slip, or empty: a wrong quaternion
 // that is right as [x, y, z, w] ("quaternions are [w, x, y, z]").
 QString slipHint(const Answer& a, const AnswerResult& r, double tolerance);
+
+// Steps counted from 1: not every answer right in `step`, but every one right in step
+// k - 1 ("steps count from 0: did you mean step 0? (every answer is right for step 0)"),
+// or empty. `states` must hold step k - 1 (StepStates::prepare); without it, empty.
+// rbw check and the check panel both call it.
+QString stepSlipHint(const std::vector<Answer>& answers, const std::vector<AnswerResult>& results, long step,
+                     const StepStates& states, double tolerance);
 
 } // namespace rbw

@@ -31,7 +31,8 @@ QJsonObject drawScene(const ExerciseSpec& spec, std::mt19937_64& engine)
                 values.push_back(gridValue(rule.lo[c], k, rule.step, rule.decimals));
                 allZero = allZero && values.back() == 0.0;
             }
-            if (!rule.nonzero || !allZero) break;
+            const bool avoided = !rule.vector && std::find(rule.avoid.begin(), rule.avoid.end(), values[0]) != rule.avoid.end();
+            if ((!rule.nonzero || !allZero) && !avoided) break;
         }
         QJsonValue value;
         if (rule.vector) {
@@ -63,12 +64,14 @@ QString runCandidate(const ExerciseSpec& spec, const SceneDef& scene, GeneratedE
     StepTrace trace;
     for (long k = 0; k < scene.steps; ++k) {
         trace.clear();
+        std::vector<BodyState> before = haveAnswer ? std::vector<BodyState>() : world.states();
         const StepStatus status = world.step(&trace);
         if (!status.ok) return "the scene blows up in step " + QString::number(k) + ": " + QString::fromStdString(status.message);
         const bool answerHere = spec.answerAtFirstContact ? !trace.contacts.empty() : k == spec.answerStep;
         if (answerHere && !haveAnswer) {
             haveAnswer = true;
             g.answerStep = k;
+            g.startStates = std::move(before);
             g.answerTrace = trace;
         }
         for (size_t r = 0; r < spec.require.size(); ++r) {

@@ -25,6 +25,7 @@ struct GeneratedExercise {
     std::uint64_t seed = 0;
     int attempt = 0;             // which sub-seed gave it (0: the seed itself)
     long answerStep = 0;
+    std::vector<BodyState> startStates;   // every body's state at the start of that step (the physics')
     StepTrace answerTrace;       // the physics' trace of that step
     std::vector<TraceEntry> key; // the answer-table entries of that trace, in trace order
     QStringList errors;          // why no scene could be made; empty on success

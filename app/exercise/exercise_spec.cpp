@@ -115,8 +115,8 @@ ExerciseLoadResult loadExercise(const QString& lesson)
         }
         const QJsonObject v = varyList[i].toObject();
         for (const QString& key : v.keys()) {
-            if (!QStringList{"path", "paths", "range", "step", "nonzero"}.contains(key)) {
-                errors << fmt(spec, at + "." + key, "unknown key; known: path, paths, range, step, nonzero");
+            if (!QStringList{"path", "paths", "range", "step", "nonzero", "avoid"}.contains(key)) {
+                errors << fmt(spec, at + "." + key, "unknown key; known: path, paths, range, step, nonzero, avoid");
             }
         }
         ExerciseVary rule;
@@ -176,6 +176,33 @@ ExerciseLoadResult loadExercise(const QString& lesson)
                            gridValue(rule.lo[c], 0, rule.step, rule.decimals) == 0.0;
             }
             if (onlyZero) errors << fmt(spec, at + ".nonzero", "is true, but the range holds only 0");
+        }
+        // avoid: values of a number's grid that are redrawn (h = 1 hides missing-time-step).
+        if (v.contains("avoid")) {
+            const QJsonArray avoid = v.value("avoid").toArray();
+            if (!v.value("avoid").isArray() || avoid.isEmpty()) {
+                errors << fmt(spec, at + ".avoid", "must be a list of numbers of the range, e.g. [1]");
+            } else if (isVector) {
+                errors << fmt(spec, at + ".avoid", "is for a number; a vector's range avoids nothing");
+            } else if (!rule.lo.empty()) {
+                const std::uint64_t n = gridCount(rule.lo[0], rule.hi[0], rule.step);
+                for (qsizetype a = 0; a < avoid.size(); ++a) {
+                    const QString where = at + QStringLiteral(".avoid[%1]").arg(a);
+                    const double x = avoid[a].toDouble();
+                    bool onGrid = false;
+                    for (std::uint64_t k = 0; avoid[a].isDouble() && k <= n && !onGrid; ++k) {
+                        onGrid = gridValue(rule.lo[0], k, rule.step, rule.decimals) == x;
+                    }
+                    if (!onGrid) {
+                        errors << fmt(spec, where, "must be one of the range's values (lo + k step)");
+                    } else {
+                        rule.avoid.push_back(x);
+                    }
+                }
+                if (static_cast<std::uint64_t>(rule.avoid.size()) > n) {
+                    errors << fmt(spec, at + ".avoid", "avoids every value of the range");
+                }
+            }
         }
         // Every path must exist in the scene with the range's shape.
         for (const QString& path : rule.paths) {

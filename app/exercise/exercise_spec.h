@@ -22,6 +22,7 @@ struct ExerciseVary {
     double step = 0.1;           // values are lo + k step, k = 0, 1, ...
     int decimals = 1;            // decimals of step: the values are rounded to these
     bool nonzero = false;        // redraw an all-zero value
+    std::vector<double> avoid;   // a number's values that are redrawn (they hide a mistake)
 };
 
 struct ExerciseRequire {

@@ -26,6 +26,8 @@ ExerciseActions::ExerciseActions(QWidget* window, LessonController* lessons, QSt
     connect(newNumbers_, &QAction::triggered, this, &ExerciseActions::newNumbers);
     exportWorksheet_->setObjectName("actionExportWorksheet");
     connect(exportWorksheet_, &QAction::triggered, this, &ExerciseActions::writeWorksheet);
+    connect(lessons_, &LessonController::started, this,
+            [this](const SceneDef&, const StartedScene& info) { shownSeed_ = info.seed; });
 }
 
 std::optional<quint64> ExerciseActions::parseSeed(const QString& text, QString* error)
@@ -37,13 +39,13 @@ std::optional<quint64> ExerciseActions::parseSeed(const QString& text, QString* 
     return std::nullopt;
 }
 
-std::optional<quint64> ExerciseActions::askSeed(QWidget* parent, const QString& title)
+std::optional<quint64> ExerciseActions::askSeed(QWidget* parent, const QString& title, std::optional<quint64> prefill)
 {
     QInputDialog dialog(parent);
     dialog.setObjectName("seedDialog");
     dialog.setWindowTitle(title);
     dialog.setLabelText(tr("Seed (the same seed gives the same numbers):"));
-    dialog.setTextValue(QString::number(QRandomGenerator::global()->bounded(1000000)));
+    dialog.setTextValue(QString::number(prefill.value_or(QRandomGenerator::global()->bounded(1000000))));
     if (dialog.exec() != QDialog::Accepted) return std::nullopt;
     QString error;
     const std::optional<quint64> seed = parseSeed(dialog.textValue(), &error);
@@ -66,7 +68,8 @@ void ExerciseActions::writeWorksheet()
         QMessageBox::information(window_, tr("Worksheet"), tr("This lesson has no exercise.\n\n%1").arg(spec.errors.join('\n')));
         return;
     }
-    const std::optional<quint64> seed = askSeed(window_, tr("Worksheet"));
+    // The numbers on screen when they are new numbers: the sheet is the exercise shown.
+    const std::optional<quint64> seed = askSeed(window_, tr("Worksheet"), shownSeed_);
     if (!seed) return;
     const QString path = QFileDialog::getSaveFileName(window_, tr("Export worksheet"),
                                                       QStringLiteral("worksheet-%1.pdf").arg(*seed),

@@ -113,6 +113,7 @@ bool LessonController::openNewNumbers(quint64 seed, QString* error)
     StartedScene info;
     info.origin = SceneOrigin::NewNumbers;
     info.statusMessage = tr("New numbers: seed %1").arg(seed);
+    info.seed = seed;
     start(*generated.scene, record, info);
     return true;
 }

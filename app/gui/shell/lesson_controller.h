@@ -16,6 +16,8 @@
 #include <QObject>
 #include <QStringList>
 
+#include <optional>
+
 namespace rbw {
 
 class Session;
@@ -31,6 +33,7 @@ struct StartedScene {
     QString windowTitle;
     QString lessonMarkdown;  // the Lesson dock's new text; empty: it stays (new numbers, editor)
     QString statusMessage;   // a note for the status bar, or empty
+    std::optional<quint64> seed;   // new numbers: the seed they were drawn from
 };
 
 class LessonController : public QObject {

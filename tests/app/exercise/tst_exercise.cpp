@@ -9,6 +9,7 @@
 #include "tests/test_support.h"
 
 #include "app/exercise/exercise.h"
+#include "app/output/value_format.h"
 #include "physics/engine/world.h"
 
 #include <QDir>
@@ -335,15 +336,78 @@ private slots:
         // lesson 1: F, q, x, v, L, I^-1, omega and two probes' v_p
         QCOMPARE(answers, qsizetype(9));
         QCOMPARE(sheetText.count(QStringLiteral("<td class=\"answer\"></td>")), answers);
-        QCOMPARE(keyText.count(QStringLiteral("<td class=\"answer\"></td>")), qsizetype(0));
-        QCOMPARE(keyText.count(QStringLiteral("<td class=\"answer\">")), answers);
+        // The key's numbers in their own column, not under "your answer" (issue 20).
+        QCOMPARE(keyText.count(QStringLiteral("<td class=\"answer\">")), qsizetype(0));
+        QCOMPARE(keyText.count(QStringLiteral("<td class=\"key\">")), answers);
+        QVERIFY(sheetText.contains(">your answer</th>"));
+        QVERIFY(!keyText.contains("your answer"));
+        QVERIFY(keyText.contains(">answer</th>"));
+        // Made for students: no pointer to the developers' docs, and no header a narrow
+        // PDF column could break mid-word at an underscore ("angula r_velo city").
+        static const QRegularExpression header(QStringLiteral("<th[^>]*>([^<]*)</th>"));
+        for (const QString& text : {sheetText, keyText}) {
+            QVERIFY(!text.contains("docs/"));
+            QVERIFY(!text.contains(".md"));
+            int headers = 0;
+            for (const QRegularExpressionMatch& m : header.globalMatch(text)) {
+                ++headers;
+                QVERIFY2(!m.captured(1).contains('_'), qPrintable(m.captured(1)));
+            }
+            QVERIFY(headers > 10);   // not vacuous: the setup and the bodies' keys are headers
+        }
+        QVERIFY(sheetText.contains("<th>angular velocity</th>"));
         QVERIFY(sheetText.startsWith("<!DOCTYPE html>"));
         QVERIFY(sheetText.contains("seed 3"));
         for (const char* id : {"force", "torque", "angular_velocity", "point_velocity", "inverse_inertia_world"}) {
             QVERIFY2(sheetText.contains(QStringLiteral("<code>%1</code>").arg(id)), id);
         }
         // x after the step is 0 (lesson 1's box starts at rest at the origin: x' = x + h v = 0)
-        QVERIFY(keyText.contains(QStringLiteral("<code>position</code></td><td>box</td><td></td><td>m</td><td class=\"answer\">(0, 0, 0)</td>")));
+        QVERIFY(keyText.contains(QStringLiteral("<code>position</code></td><td>box</td><td class=\"key\">(0, 0, 0)</td>")));
+        // step 0: the setup is the state at its start; no second table
+        QVERIFY(!sheetText.contains("The state at the start of step"));
+    }
+
+    // A worksheet for a later step (lessons 6 and 7 ask for the first contact, step 26 to
+    // 153) prints every body's state at the start of that step and says which bodies each
+    // contact joins (issue 21 item 9). The state is checked against the scene stepped
+    // here, independently of the generator: x and v of each body after k steps.
+    void laterStepWorksheet_data()
+    {
+        QTest::addColumn<QString>("lesson");
+        QTest::newRow("06") << "06-box-on-plane";
+        QTest::newRow("07") << "07-bounce";
+    }
+
+    void laterStepWorksheet()
+    {
+        QFETCH(QString, lesson);
+        const rbw::ExerciseLoadResult spec = rbw::loadExercise(lesson);
+        QVERIFY(spec.ok());
+        const rbw::GeneratedExercise g = rbw::generateExercise(*spec.spec, 5);
+        QVERIFY(g.ok());
+        QVERIFY(g.answerStep > 0);
+        const QString sheet = rbw::exerciseWorksheetHtml(*spec.spec, g, false);
+        QVERIFY2(sheet.contains(QStringLiteral("The state at the start of step %1 (").arg(g.answerStep)), qPrintable(sheet));
+        rbw::World world(*g.scene);
+        for (long k = 0; k < g.answerStep; ++k) QVERIFY(world.step().ok);
+        for (size_t b = 0; b < g.scene->bodies.size(); ++b) {
+            const rbw::BodyState& s = world.states()[b];
+            const QString row = QStringLiteral("<tr><td>%1</td><td>x = %2<br>")
+                                    .arg(QString::fromStdString(g.scene->bodies[b].name), rbw::formatValue(rbw::TraceValue(s.x_W)));
+            QVERIFY2(sheet.contains(row), qPrintable(row));
+            QVERIFY(sheet.contains("v = " + rbw::formatValue(rbw::TraceValue(s.v_W))));
+        }
+        // each contact of the step by its two sides
+        QVERIFY(!g.answerTrace.contacts.empty());
+        for (size_t k = 0; k < g.answerTrace.contacts.size(); ++k) {
+            const rbw::ContactHeader& c = g.answerTrace.contacts[k];
+            const QString joins = QStringLiteral("contact %1 (%2 and %3)")
+                                      .arg(k)
+                                      .arg(QString::fromStdString(g.scene->bodies[c.bodyA].name),
+                                           c.bodyB >= 0 ? QString::fromStdString(g.scene->bodies[c.bodyB].name)
+                                                        : QString::fromStdString(g.scene->planes[c.plane].name));
+            QVERIFY2(sheet.contains(joins), qPrintable(joins));
+        }
     }
 
     void badInputs_data()

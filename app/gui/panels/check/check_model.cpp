@@ -10,12 +10,16 @@
 #include <QFont>
 #include <QStringList>
 
+#include <algorithm>
 #include <set>
 #include <variant>
 
 namespace rbw {
 
 namespace {
+
+// rbw check's default --tolerance: the panel's verdicts and hints are the command's.
+constexpr double kCheckTolerance = 1e-3;
 
 int valueCount(const TraceValue& v)
 {
@@ -70,6 +74,7 @@ void CheckModel::setStep(const QString& lesson, std::unique_ptr<World> before, c
         before_.reset();
         trace_ = StepTrace{};
     }
+    earlier_.reset();
     rebuildRows();
     recheck();
     endResetModel();
@@ -81,6 +86,8 @@ void CheckModel::clear()
     before_.reset();
     trace_ = StepTrace{};
     rows_.clear();
+    stepHint_.clear();
+    earlier_.reset();
     endResetModel();
 }
 
@@ -125,10 +132,12 @@ void CheckModel::recheck()
 {
     std::vector<Answer> answers;
     std::vector<int> rowOfAnswer;
+    stepHint_.clear();
     for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
         Row& r = rows_[static_cast<size_t>(i)];
         const QString text = store_.text(lesson_, trace_.step, r.key);
         r.result = AnswerResult{};
+        r.hint.clear();
         if (text.trimmed().isEmpty()) {
             r.parsed = ParsedAnswer{};
             r.state = RowState::Empty;
@@ -147,10 +156,11 @@ void CheckModel::recheck()
     }
     if (answers.empty() || before_ == nullptr) return;
     // All entries together, in table order: the rows above are the earlier answers.
-    const std::vector<AnswerResult> results = checkAnswers(*before_, trace_, answers);
+    const std::vector<AnswerResult> results = checkAnswers(*before_, trace_, answers, kCheckTolerance);
     for (size_t k = 0; k < results.size(); ++k) {
         Row& r = rows_[static_cast<size_t>(rowOfAnswer[k])];
         r.result = results[k];
+        r.hint = slipHint(answers[k], results[k], kCheckTolerance);
         switch (results[k].verdict) {
         case Verdict::Correct:
         case Verdict::Imprecise: r.state = RowState::Correct; break;
@@ -158,6 +168,22 @@ void CheckModel::recheck()
         case Verdict::FollowsFromEarlier: r.state = RowState::FollowsFromEarlier; break;
         }
     }
+    // Steps counted from 1: the same test as rbw check's, on step k - 1 simulated once.
+    const bool allRight = std::all_of(results.begin(), results.end(), [](const AnswerResult& r) { return countsAsCorrect(r.verdict); });
+    if (!allRight && trace_.step > 0 && trace_.step <= kStepHintLimit) {
+        if (earlier_ == nullptr) {
+            earlier_ = std::make_unique<StepStates>(scene_);
+            QString blowUp;
+            earlier_->prepare({trace_.step - 1}, &blowUp);
+        }
+        stepHint_ = stepSlipHint(answers, results, trace_.step, *earlier_, kCheckTolerance);
+    }
+}
+
+QString CheckModel::rowHint(int row) const
+{
+    if (row < 0 || row >= static_cast<int>(rows_.size())) return {};
+    return rows_[static_cast<size_t>(row)].hint;
 }
 
 int CheckModel::rowCount(const QModelIndex& parent) const
@@ -198,7 +224,7 @@ QVariant CheckModel::data(const QModelIndex& index, int role) const
             case RowState::Empty: return QString();
             case RowState::Unreadable: return QStringLiteral("? %1").arg(r.parsed.error);
             case RowState::Correct: return QStringLiteral("✓ right");
-            case RowState::Wrong: return QStringLiteral("✗ wrong");
+            case RowState::Wrong: return r.hint.isEmpty() ? QStringLiteral("✗ wrong") : QStringLiteral("✗ wrong (hint)");
             case RowState::FollowsFromEarlier: return QStringLiteral("↪ follows");
             case RowState::NotChecked: return QString();
             }
@@ -227,6 +253,7 @@ QVariant CheckModel::data(const QModelIndex& index, int role) const
                                               r.count == 1 ? QStringLiteral("64/27") : r.count == 3 ? QStringLiteral("(-2.4, 4.918, -1.765)") : r.count == 4 ? QStringLiteral("[1 0 0 0]") : QStringLiteral("4.8 0 0; 0 9.836 0; 0 0 4.412"));
         }
         if (col == MarkColumn && r.state == RowState::Unreadable) return r.parsed.error;
+        if (col == MarkColumn && !r.hint.isEmpty()) return tr("%1; hint: %2").arg(verdictWords(r.state), r.hint);
         if (col == MarkColumn && !verdictWords(r.state).isEmpty()) return verdictWords(r.state);
         if (col == QuantityColumn) {
             return QStringLiteral("%1  %2").arg(QString::fromUtf8(r.entry->info->text), QString::fromStdString(r.answer.quantity));
@@ -320,6 +347,9 @@ QString CheckModel::explanationHtml(int row) const
     QString html = tr("%1 is %2 (%3).").arg(what, verdictWords(r.state), r.state == RowState::Wrong ? QStringLiteral("✗") : QStringLiteral("↪"));
     if (!r.result.explanation.empty()) {
         html += QStringLiteral("<p>%1</p>").arg(QString::fromStdString(r.result.explanation).toHtmlEscaped());
+    }
+    for (const QString& hint : {r.hint, stepHint_}) {
+        if (!hint.isEmpty()) html += tr("<p><b>Hint:</b> %1</p>").arg(hint.toHtmlEscaped());
     }
     if (!r.result.mistakes.empty()) {
         html += QStringLiteral("<p>%1</p><ul>").arg(r.result.mistakes.size() == 1 ? tr("It matches this mistake:") : tr("It matches these mistakes:"));

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "app/exercise/answer_parser.h"
+#include "app/exercise/answers_input.h"
 #include "app/exercise/answers_store.h"
 #include "physics/workbook/checker/checker.h"
 #include "physics/engine/scene.h"
@@ -66,6 +67,14 @@ public:
     // workbook's number. Empty for an empty row.
     QString explanationHtml(int row) const;
 
+    // The input slips the entries show, as `rbw check` names them (answers_input.h: one
+    // code path): a row's quaternion written [x, y, z, w] (slipHint), and the whole
+    // step's "steps count from 0: did you mean step k - 1?" (stepSlipHint, for steps up
+    // to kStepHintLimit: it simulates the scene to step k - 1 once per step). Empty: none.
+    QString rowHint(int row) const;
+    QString stepHint() const { return stepHint_; }
+    static constexpr long kStepHintLimit = 2000;
+
     // The filled, readable entries as an answers file (answers_file.h).
     QByteArray answersJson() const;
     // Reads an answers file into the store (for its step, this lesson) and shows it if it
@@ -84,6 +93,7 @@ private:
         ParsedAnswer parsed;
         RowState state = RowState::Empty;
         AnswerResult result;
+        QString hint;               // slipHint of the checked entry
     };
     static QString rowKey(const Answer& a);
     void rebuildRows();
@@ -95,6 +105,8 @@ private:
     StepTrace trace_;
     SceneDef scene_;
     std::vector<Row> rows_;
+    QString stepHint_;
+    std::unique_ptr<StepStates> earlier_;   // step k - 1, simulated once for stepHint_
 };
 
 } // namespace rbw

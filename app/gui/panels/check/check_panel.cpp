@@ -60,6 +60,11 @@ CheckPanel::CheckPanel(QWidget* parent) : QWidget(parent)
 
     header_ = new QLabel;
     header_->setWordWrap(true);
+    // An input slip of the whole step (rbw check's file hint): steps counted from 1.
+    stepHint_ = new QLabel;
+    stepHint_->setObjectName("checkStepHint");
+    stepHint_->setWordWrap(true);
+    stepHint_->hide();
 
     view_ = new QTableView;
     view_->setObjectName("checkTable");
@@ -115,6 +120,7 @@ CheckPanel::CheckPanel(QWidget* parent) : QWidget(parent)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(header_);
+    layout->addWidget(stepHint_);
     layout->addLayout(buttons);
     layout->addWidget(splitter, 1);
 
@@ -126,6 +132,8 @@ CheckPanel::CheckPanel(QWidget* parent) : QWidget(parent)
     connect(view_->selectionModel(), &QItemSelectionModel::currentChanged, this, &CheckPanel::onCurrentChanged);
     connect(model_, &QAbstractItemModel::dataChanged, this, &CheckPanel::onCurrentChanged);
     connect(model_, &QAbstractItemModel::modelReset, this, &CheckPanel::onCurrentChanged);
+    connect(model_, &QAbstractItemModel::dataChanged, this, &CheckPanel::updateStepHint);
+    connect(model_, &QAbstractItemModel::modelReset, this, &CheckPanel::updateStepHint);
     connect(model_, &QAbstractItemModel::modelReset, this, [this] {
         for (int c : {int(CheckModel::QuantityColumn), int(CheckModel::OfColumn)}) {
             view_->resizeColumnToContents(c);
@@ -175,6 +183,18 @@ void CheckPanel::updateHeader()
     load_->setEnabled(has);
     clear_->setEnabled(has);
     nextStep_->setEnabled(has);
+}
+
+void CheckPanel::updateStepHint()
+{
+    const QString hint = model_->stepHint();
+    stepHint_->setText(hint.isEmpty() ? QString() : tr("<b>Hint:</b> %1").arg(hint.toHtmlEscaped()));
+    stepHint_->setVisible(!hint.isEmpty());
+}
+
+QString CheckPanel::stepHintText() const
+{
+    return model_->stepHint().isEmpty() ? QString() : stepHint_->text();
 }
 
 void CheckPanel::onCurrentChanged()

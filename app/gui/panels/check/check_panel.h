@@ -33,6 +33,8 @@ public:
     QTableView* view() const { return view_; }
     // What the explanation pane shows (HTML).
     QString explanationHtml() const;
+    // The step's input-slip hint above the table ("steps count from 0: …"), or empty.
+    QString stepHintText() const;
 
     // Writes the entries as an answers file through QSaveFile; reads one.
     bool saveAnswers(const QString& path, QString* error = nullptr);
@@ -54,10 +56,12 @@ private:
     void saveWithDialog();
     void loadWithDialog();
     void updateHeader();
+    void updateStepHint();
 
     CheckModel* model_ = nullptr;
     QTableView* view_ = nullptr;
     QLabel* header_ = nullptr;
+    QLabel* stepHint_ = nullptr;
     QTextBrowser* explanation_ = nullptr;
     QPushButton* whatsWrong_ = nullptr;
     QPushButton* nextStep_ = nullptr;

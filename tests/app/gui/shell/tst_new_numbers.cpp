@@ -8,6 +8,9 @@
 #include "app/gui/panels/quantities/trace_model.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QInputDialog>
+#include <QTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -16,6 +19,24 @@
 #include <QtTest>
 
 using namespace rbw;
+
+namespace {
+
+// The text the next seed dialog opens with; the dialog is cancelled.
+void readSeedDialog(QString* text)
+{
+    QTimer::singleShot(0, [=] {
+        auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+        if (dialog == nullptr || dialog->objectName() != QLatin1String("seedDialog")) {
+            readSeedDialog(text);   // not open yet: look again
+            return;
+        }
+        *text = dialog->textValue();
+        dialog->reject();
+    });
+}
+
+} // namespace
 
 class TestNewNumbers : public QObject {
     Q_OBJECT
@@ -51,6 +72,24 @@ private slots:
         // and it steps like any lesson
         w.stepOnce();
         QVERIFY(w.traceModel()->rowCount() > 0);
+    }
+
+    // Export worksheet offers the seed of the numbers on screen (issue 20: the sheet
+    // used another seed than the screen); new numbers of another seed change it.
+    void worksheetOffersTheSeedOnScreen()
+    {
+        MainWindow w;
+        QVERIFY(w.openLesson("01-one-step"));
+        auto* exportAction = w.findChild<QAction*>("actionExportWorksheet");
+        QVERIFY(exportAction != nullptr);
+        for (const quint64 seed : {quint64(42), quint64(4242)}) {
+            QString error;
+            QVERIFY2(w.openNewNumbers(seed, &error), qPrintable(error));
+            QString offered;
+            readSeedDialog(&offered);
+            exportAction->trigger();
+            QCOMPARE(offered, QString::number(seed));
+        }
     }
 
     // Negative control: lesson 2 has no exercise.json; the scene stays.

@@ -22,6 +22,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QAction>
@@ -108,6 +109,9 @@ private slots:
     void loadRefusesWhatCheckRefuses_data();
     void loadRefusesWhatCheckRefuses();
     void typingOwnsTheKeyboard();
+    void slipHints_data();
+    void slipHints();
+    void stepsCountedFromOne();
 };
 
 void TestCheckPanel::initTestCase()
@@ -406,6 +410,108 @@ int main(int argc, char* argv[])
     QApplication::setOrganizationName("rigid-workbook-tests");
     TestCheckPanel test;
     return QTest::qExec(&test, argc, argv);
+}
+
+// The input slips rbw check names get the same hint in the panel (issue 21 item 6; one
+// code path: app/exercise/answers_input.h's slipHint and the answer parser). Lesson 8's
+// "standard" after step 0: its orientation r' = r (omega_0 = 0, so r + h/2 (0, omega) r
+// = r) is 30 degrees about z, [w, x, y, z] = [cos 15°, 0, 0, sin 15°], read from the trace.
+void TestCheckPanel::slipHints_data()
+{
+    QTest::addColumn<QString>("slip");      // which entry is typed
+    QTest::addColumn<int>("state");
+    QTest::addColumn<QString>("hint");      // in the Mark column's text or tooltip, or "" for none
+    QTest::newRow("quaternion [x, y, z, w]") << "xyzw" << int(State::Wrong) << "quaternions are [w, x, y, z]";
+    QTest::newRow("quaternion [w, x, y, z]: no hint") << "wxyz" << int(State::Correct) << "";
+    QTest::newRow("another wrong quaternion: no hint") << "other" << int(State::Wrong) << "";
+    QTest::newRow("decimal commas") << "comma" << int(State::Unreadable) << "use a decimal point: 3.11, not 3,11";
+}
+
+void TestCheckPanel::slipHints()
+{
+    QFETCH(QString, slip);
+    QFETCH(int, state);
+    QFETCH(QString, hint);
+    Lesson8 l;
+    const Quat r = std::get<Quat>(l.session.currentTrace()->find("orientation", 0)->value);
+    const int row = l.model()->rowOf("orientation", 0);
+    QVERIFY(row >= 0);
+    const auto n = [](double x) { return QString::number(x, 'g', 10); };
+    QString text;
+    if (slip == "xyzw") text = QStringLiteral("[%1 %2 %3 %4]").arg(n(r.x()), n(r.y()), n(r.z()), n(r.w()));
+    if (slip == "wxyz") text = QStringLiteral("[%1 %2 %3 %4]").arg(n(r.w()), n(r.x()), n(r.y()), n(r.z()));
+    if (slip == "other") text = QStringLiteral("[%1 %2 %3 %4]").arg(n(r.z()), n(r.w()), n(r.x()), n(r.y()));
+    if (slip == "comma") text = QStringLiteral("[%1 %2 %3 %4]").arg(n(r.w()), n(r.x()), n(r.y()), n(r.z())).replace('.', ',');
+    l.type(row, text);
+    QCOMPARE(int(l.model()->rowState(row)), state);
+    const QString mark = l.mark(row);
+    const QString tip = l.model()->index(row, CheckModel::MarkColumn).data(Qt::ToolTipRole).toString();
+    l.panel.view()->setCurrentIndex(l.model()->index(row, CheckModel::YoursColumn));
+    l.panel.showWhatsWrong();
+    const QString explained = l.panel.explanationHtml();
+    if (hint.isEmpty()) {
+        QCOMPARE(l.model()->rowHint(row), QString());
+        QVERIFY2(!tip.contains("hint") && !mark.contains("hint"), qPrintable(mark + " / " + tip));
+        QVERIFY(!explained.contains("Hint:"));
+    } else if (slip == "comma") {
+        QVERIFY2(mark.contains(hint), qPrintable(mark));   // the parser's message, as answers files get it
+    } else {
+        QVERIFY2(l.model()->rowHint(row).contains(hint), qPrintable(l.model()->rowHint(row)));
+        QVERIFY2(mark.contains("hint") && tip.contains(hint), qPrintable(mark + " / " + tip));
+        QVERIFY2(explained.contains(hint), qPrintable(explained));
+        // the same text rbw check prints (answers_input.h)
+        Answer a;
+        a.quantity = "orientation";
+        a.body = 0;
+        a.value = {r.x(), r.y(), r.z(), r.w()};
+        AnswerResult wrong;
+        wrong.verdict = Verdict::Wrong;
+        wrong.expected = {r.w(), r.x(), r.y(), r.z()};
+        QCOMPARE(l.model()->rowHint(row), slipHint(a, wrong, 1e-3));
+    }
+}
+
+// Steps counted from 1: at step 1, the numbers of step 0 (read from a step-0 trace: x' and
+// omega' of "standard") are not all right (omega is wrong), but every one is right for step 0: the panel
+// says "did you mean step 0?", as rbw check does for a file. Negative controls: step 1's
+// own numbers, and step 0's position beside a wrong omega, get no hint.
+void TestCheckPanel::stepsCountedFromOne()
+{
+    Session session;
+    session.load(lessonScene("08-conventions/scene.json"));
+    session.step();   // step 0
+    const StepTrace step0 = *session.currentTrace();
+    session.step();   // step 1
+    const StepTrace& step1 = *session.currentTrace();
+    CheckPanel panel;
+    panel.setStep("08-conventions", session.worldBeforeCurrentStep(), &step1, session.world()->scene());
+    QCOMPARE(panel.model()->step(), 1L);
+    const int xRow = panel.model()->rowOf("position", 0);
+    const int omegaRow = panel.model()->rowOf("angular_velocity", 0);
+    QVERIFY(xRow >= 0 && omegaRow >= 0);
+    const auto vec = [](const StepTrace& t, const char* id) { return std::get<Vec3>(t.find(id, 0)->value); };
+    const auto type = [&](int row, const QString& text) {
+        QVERIFY(panel.model()->setData(panel.model()->index(row, CheckModel::YoursColumn), text));
+    };
+
+    type(xRow, vecText(vec(step0, "position"), 10));
+    type(omegaRow, vecText(vec(step0, "angular_velocity"), 10));
+    // omega turns with the body in step 1 (by |omega| h, about 0.06 rad): not step 1's number
+    // (x moves by h v = 0.005 m only, right to 3 figures in both steps)
+    QCOMPARE(panel.model()->rowState(omegaRow), State::Wrong);
+    QVERIFY2(panel.stepHintText().contains("steps count from 0: did you mean step 0?"), qPrintable(panel.stepHintText()));
+    QVERIFY(panel.findChild<QLabel*>("checkStepHint") != nullptr);
+    panel.view()->setCurrentIndex(panel.model()->index(omegaRow, CheckModel::YoursColumn));
+    panel.showWhatsWrong();
+    QVERIFY2(panel.explanationHtml().contains("did you mean step 0?"), qPrintable(panel.explanationHtml()));
+
+    type(omegaRow, vecText(2 * vec(step0, "angular_velocity"), 10));   // wrong in both steps
+    QCOMPARE(panel.stepHintText(), QString());
+
+    type(xRow, vecText(vec(step1, "position"), 10));
+    type(omegaRow, vecText(vec(step1, "angular_velocity"), 10));
+    QCOMPARE(panel.model()->rowState(omegaRow), State::Correct);
+    QCOMPARE(panel.stepHintText(), QString());
 }
 
 #include "tst_check_panel.moc"

@@ -1,0 +1,213 @@
+// Exercises that show mistakes (issue 21 items 9 and 10; app/exercise/exercise_mistakes.h).
+// Every mistake model of the checker's catalogue (iterated: a model added there is
+// covered here without a change) against every exercise draw of seeds 1..20 of each
+// lesson with an exercise: no draw may make a model give the right number in a quantity
+// where other draws show it (h = 1 hides missing-time-step: L + q = L + h q), and no draw
+// may make two models give the same numbers where other draws tell them apart (c = 0.5:
+// -(1 - c) v_rel.n = -c v_rel.n). Negative controls: the same measurement flags exactly
+// those two draws when the generator is allowed to make them. And docs/checker.md's
+// per-lesson section is the measured table, not a claim.
+#include "tests/test_support.h"
+
+#include "app/exercise/exercise.h"
+#include "app/exercise/exercise_mistakes.h"
+
+#include <QFile>
+#include <QSaveFile>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <numeric>
+
+namespace {
+
+const QStringList kLessons{"01-one-step", "03-two-box-collision", "06-box-on-plane", "07-bounce", "08-conventions"};
+
+std::vector<std::uint64_t> seeds(int n)
+{
+    std::vector<std::uint64_t> s(n);
+    std::iota(s.begin(), s.end(), std::uint64_t{1});
+    return s;
+}
+
+rbw::ExerciseSpec lessonSpec(const QString& lesson)
+{
+    const rbw::ExerciseLoadResult r = rbw::loadExercise(lesson);
+    if (!r.ok()) qFatal("%s", qPrintable(r.errors.join("; ")));
+    return *r.spec;
+}
+
+rbw::ExerciseVary& ruleFor(rbw::ExerciseSpec& spec, const QString& path)
+{
+    for (rbw::ExerciseVary& v : spec.vary) {
+        if (v.paths.contains(path)) return v;
+    }
+    qFatal("no vary rule for %s", qPrintable(path));
+    return spec.vary.front();
+}
+
+const rbw::ModelVisibility& modelOf(const rbw::ExerciseMistakeReport& r, const QString& name)
+{
+    for (const rbw::ModelVisibility& m : r.models) {
+        if (m.model == name) return m;
+    }
+    qFatal("no model %s", qPrintable(name));
+    return r.models.front();
+}
+
+// The per-lesson section of docs/checker.md: from its heading to the end of the file.
+const char* kSectionHeading = "## Which mistakes each exercise can show";
+
+} // namespace
+
+class TestExerciseMistakes : public QObject {
+    Q_OBJECT
+
+    QString measured_;   // the sections of every lesson, in kLessons' order
+
+private slots:
+    void noDrawHidesAMistake_data()
+    {
+        QTest::addColumn<QString>("lesson");
+        for (const QString& l : kLessons) QTest::newRow(qPrintable(l)) << l;
+    }
+
+    void noDrawHidesAMistake()
+    {
+        QFETCH(QString, lesson);
+        const rbw::ExerciseMistakeReport r = rbw::measureExerciseMistakes(lessonSpec(lesson), seeds(20));
+        QVERIFY2(r.errors.isEmpty(), qPrintable(r.errors.join("\n")));
+        QCOMPARE(r.models.size() >= rbw::mistakeCatalogue().size(), true);   // every model, each variant
+        // Not vacuous: each lesson shows some mistakes.
+        int showing = 0;
+        for (const rbw::ModelVisibility& m : r.models) showing += m.shownIn.isEmpty() ? 0 : 1;
+        QVERIFY2(showing > 0, qPrintable(lesson));
+        QVERIFY2(r.failures().isEmpty(), qPrintable(r.failures().join("\n")));
+        measured_ += '\n' + r.markdown();
+    }
+
+    // Negative control: lesson 1 with h drawn from 0.5 .. 2 (its old range, which holds
+    // h = 1): the draws with h = 1 hide missing-time-step in L' = L + q = L + h q.
+    void hOfOneIsFlagged()
+    {
+        rbw::ExerciseSpec spec = lessonSpec("01-one-step");
+        rbw::ExerciseVary& h = ruleFor(spec, "dt");
+        h.lo = {0.5};
+        h.hi = {2};
+        h.step = 0.5;
+        h.decimals = 1;
+        h.avoid.clear();
+        const rbw::ExerciseMistakeReport r = rbw::measureExerciseMistakes(spec, seeds(20));
+        const rbw::ModelVisibility& m = modelOf(r, "missing-time-step");
+        QVERIFY2(!m.hiddenAt.isEmpty(), "h = 1 was never drawn or not flagged");
+        QVERIFY2(m.hiddenAt.join('\n').contains("dt = 1)"), qPrintable(m.hiddenAt.join('\n')));
+        QVERIFY(!r.failures().isEmpty());
+    }
+
+    // Negative control: lesson 3 with c fixed at 0.5 for half the draws' range (0.5 .. 0.6):
+    // restitution-one-minus and impulse-without-one-plus give the same J there.
+    void cOfHalfIsFlagged()
+    {
+        rbw::ExerciseSpec spec = lessonSpec("03-two-box-collision");
+        rbw::ExerciseVary& c = ruleFor(spec, "restitution");
+        c.lo = {0.5};
+        c.hi = {0.6};
+        c.step = 0.1;
+        c.decimals = 1;
+        c.avoid.clear();
+        const rbw::ExerciseMistakeReport r = rbw::measureExerciseMistakes(spec, seeds(20));
+        const rbw::ModelVisibility& m = modelOf(r, "restitution-one-minus");
+        QVERIFY2(m.coincidences.join('\n').contains("impulse-without-one-plus"), qPrintable(r.failures().join('\n')));
+        QVERIFY2(m.coincidences.join('\n').contains("restitution = 0.5"), qPrintable(m.coincidences.join('\n')));
+    }
+
+    // "avoid" (docs/exercises.md): a number's values that are redrawn. Lesson 1's h from
+    // 0.5 .. 2 avoiding 1: over 40 seeds every other value of the grid is drawn, 1 never.
+    void avoidIsNeverDrawn()
+    {
+        const rbw::ExerciseSpec spec = lessonSpec("01-one-step");
+        QSet<double> drawn;
+        for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+            const rbw::GeneratedExercise g = rbw::generateExercise(spec, seed);
+            QVERIFY(g.ok());
+            drawn.insert(g.scene->dt);
+            QVERIFY(g.scene->bodies[0].mass != 1.0);
+        }
+        QCOMPARE(drawn, (QSet<double>{0.5, 1.5, 2.0}));
+    }
+
+    // A bad "avoid": the file, the JSON path and the reason.
+    void badAvoid_data()
+    {
+        QTest::addColumn<QByteArray>("rule");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("not on the grid") << QByteArray(R"("path": "dt", "range": [0.5, 2], "step": 0.5, "avoid": [1.2])")
+                                         << "vary[0].avoid[0]: must be one of the range's values";
+        QTest::newRow("every value") << QByteArray(R"("path": "dt", "range": [0.5, 1], "step": 0.5, "avoid": [0.5, 1])")
+                                     << "vary[0].avoid: avoids every value of the range";
+        QTest::newRow("a vector") << QByteArray(R"("path": "forces[0].force", "range": [[0, 1], [0, 1], [0, 1]], "step": 1, "avoid": [1])")
+                                  << "vary[0].avoid: is for a number";
+        QTest::newRow("not a list") << QByteArray(R"("path": "dt", "range": [0.5, 2], "step": 0.5, "avoid": 1)")
+                                    << "vary[0].avoid: must be a list of numbers";
+    }
+
+    void badAvoid()
+    {
+        QFETCH(QByteArray, rule);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        QVERIFY(QFile::copy(QStringLiteral(RBW_SOURCE_DIR "/lessons/01-one-step/scene.json"), dir.filePath("scene.json")));
+        QFile f(dir.filePath("exercise.json"));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("{ \"vary\": [ { " + rule + " } ], \"quantities\": [\"force\"] }");
+        f.close();
+        const rbw::ExerciseLoadResult r = rbw::loadExercise(dir.path());
+        QVERIFY(!r.ok());
+        QVERIFY2(r.errors.join('\n').contains("exercise.json: " + message), qPrintable(r.errors.join('\n')));
+    }
+
+    // docs/checker.md's last section is the table measured above, word for word.
+    void docAgrees()
+    {
+        if (measured_.isEmpty()) QSKIP("run with noDrawHidesAMistake");
+        const QString expected = QString(kSectionHeading) + "\n" + measuredIntro() + measured_;
+        QFile f(QStringLiteral(RBW_SOURCE_DIR "/docs/checker.md"));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QString doc = QString::fromUtf8(f.readAll());
+        const qsizetype at = doc.indexOf(kSectionHeading);
+        QVERIFY2(at >= 0, "docs/checker.md has no per-lesson section");
+        const QString section = doc.mid(at).trimmed();
+        if (section != expected.trimmed()) {
+            qWarning().noquote() << "docs/checker.md's section should read:\n" << expected;
+            // After a change to the catalogue: RBW_UPDATE_CHECKER_DOC=1 writes it (atomically).
+            if (qEnvironmentVariableIsSet("RBW_UPDATE_CHECKER_DOC")) {
+                QSaveFile out(f.fileName());
+                QVERIFY(out.open(QIODevice::WriteOnly));
+                out.write((doc.left(at) + expected.trimmed() + '\n').toUtf8());
+                QVERIFY(out.commit());
+            }
+        }
+        QCOMPARE(section, expected.trimmed());
+    }
+
+private:
+    static QString measuredIntro()
+    {
+        return QStringLiteral(
+            "\n"
+            "Measured, not claimed: `tests/app/exercise/tst_exercise_mistakes.cpp` runs every mistake\n"
+            "model of the catalogue (each variant) against every draw of seeds 1–20 of each lesson's\n"
+            "exercise (`app/exercise/exercise_mistakes.h`) and writes this section; it fails when this\n"
+            "text differs (it prints the new one), when a draw makes a model give the right number\n"
+            "in a quantity where other draws show it, or when a draw makes two models give the same\n"
+            "numbers where other draws tell them apart. \"Shows in\": the exercise's answers in which\n"
+            "the model gives another number than the right one in every draw (a quantity, its body\n"
+            "or its contact's pair). \"The same numbers as\": models it cannot be told apart from in\n"
+            "that exercise (every answer the same in every draw). \"Cannot show\": models that give\n"
+            "the right number in every answer of every draw.\n");
+    }
+};
+
+QTEST_GUILESS_MAIN(TestExerciseMistakes)
+#include "tst_exercise_mistakes.moc"
