@@ -387,8 +387,7 @@ void TestPlotPanel::axisRangeCoversVisibleData()
     panel.refreshNow();
     const double lo = *std::min_element(values.begin(), values.end());
     const double hi = *std::max_element(values.begin(), values.end());
-    // What must be covered (plot_axis_range.h): 5 % of the span beyond the data, or
-    // v ± 0.05|v|, or [-1, 1] for data that is 0 (issue 20: no "±1e-09" axis).
+    // What must be covered (plot_axis_range.h): 5 % beyond the data, v ± 0.05|v|, or [-1, 1] for 0.
     const bool zero = std::max(std::abs(lo), std::abs(hi)) <= 1e-9;
     const double pad = zero ? 1.0 : (constant ? 0.05 * std::abs(lo) : 0.05 * (hi - lo));
     // (The padding stops at 0 for data that does not cross it.)
