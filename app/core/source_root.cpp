@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <QStringList>
 
 // Where the package's data folder is, relative to the folder holding the executables
 // (app/CMakeLists.txt sets it from GNUInstallDirs).
@@ -56,6 +57,23 @@ QString sourceRoot()
         return clean(built);
     }
 #endif
+    return {};
+}
+
+QString userGuidePath()
+{
+    const QString guide = QStringLiteral("docs/user-guide.md");
+    QStringList roots{installedDataDirectory()};
+    const QString fromEnv = qEnvironmentVariable("RBW_SOURCE_ROOT");
+    if (!fromEnv.isEmpty()) roots << fromEnv;
+#ifdef RBW_SOURCE_TREE
+    roots << QStringLiteral(RBW_SOURCE_TREE);
+#endif
+    for (const QString& root : roots) {
+        if (root.isEmpty()) continue;
+        const QString path = QDir(root).filePath(guide);
+        if (QFileInfo(path).isFile()) return clean(path);
+    }
     return {};
 }
 

@@ -23,6 +23,12 @@ QString installedDataDirectory();
 //      holds physics/ (a build tree).
 QString sourceRoot();
 
+// The user guide (Help → User guide): the installed copy
+// installedDataDirectory()/docs/user-guide.md, else docs/user-guide.md of the source
+// tree (RBW_SOURCE_ROOT or the tree the program was built from); empty if neither
+// exists.
+QString userGuidePath();
+
 // The absolute path of a file of the source tree (relative path as in the trace);
 // empty if there is no source tree or no such file.
 QString sourceFilePath(const QString& relative);

@@ -17,6 +17,18 @@ QString plainActionText(const QAction* action)
     return t;
 }
 
+QList<QAction*> everyShortcutAction(const QWidget* window, const QList<QAction*>& inMenuOrder)
+{
+    QList<QAction*> out = inMenuOrder;
+    if (window == nullptr) return out;
+    // Any other action of the window with a key (a panel's own, one added later)
+    // is listed too: the dialog cannot miss a key the window has.
+    for (QAction* a : window->findChildren<QAction*>()) {
+        if (!a->shortcuts().isEmpty() && !out.contains(a)) out << a;
+    }
+    return out;
+}
+
 void showKeysDialog(QWidget* parent, const QList<QAction*>& shortcutActions)
 {
     auto* dialog = new QDialog(parent);
@@ -30,7 +42,7 @@ void showKeysDialog(QWidget* parent, const QList<QAction*>& shortcutActions)
     table->verticalHeader()->hide();
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     QList<QPair<QString, QString>> rows;
-    for (const QAction* a : shortcutActions) {
+    for (const QAction* a : everyShortcutAction(parent, shortcutActions)) {
         QStringList keys;
         for (const QKeySequence& k : a->shortcuts()) keys << k.toString(QKeySequence::NativeText);
         if (!keys.isEmpty()) rows.append({plainActionText(a), keys.join(QObject::tr(" or "))});

@@ -7,8 +7,12 @@
 
 #include <QApplication>
 #include <QClipboard>
+#include <QChartView>
 #include <QDockWidget>
+#include <QMainWindow>
+#include <QPointer>
 #include <QStatusBar>
+#include <QTimer>
 #include <QTreeView>
 
 #include <cstring>
@@ -67,10 +71,20 @@ bool QuantityTableActions::plotRowOverTime(const QModelIndex& row, bool norm)
     if (e->body >= 0 && e->body < static_cast<int>(scene.bodies.size())) {
         label += QStringLiteral(" (%1)").arg(QString::fromStdString(scene.bodies[static_cast<std::size_t>(e->body)].name));
     }
-    p_.plots->addQuantity(QuantityKey{QString::fromLatin1(e->info->id), e->body, e->index}, label,
-                          QString::fromUtf8(e->info->unit), session_->history(), norm, QString::fromUtf8(e->info->text));
+    QuantityPlot* plot = p_.plots->addQuantity(QuantityKey{QString::fromLatin1(e->info->id), e->body, e->index}, label,
+                                               QString::fromUtf8(e->info->unit), session_->history(), norm,
+                                               QString::fromUtf8(e->info->text));
     p_.plotDock->show();
     p_.plotDock->raise();
+    // A chart tall enough to read (issue 20: about 90 px at 1366x768 before): the
+    // docked plot grows to kReadableChartHeight, the 3D view giving the room (the
+    // student can drag the splitter back); once laid out, so the chart's height is known.
+    QTimer::singleShot(0, p_.plotDock, [dock = p_.plotDock, chart = QPointer<QuantityPlot>(plot)] {
+        auto* window = qobject_cast<QMainWindow*>(dock->parentWidget());
+        if (window == nullptr || dock->isFloating() || chart == nullptr) return;
+        const int missing = kReadableChartHeight - chart->chartView()->height();
+        if (missing > 0) window->resizeDocks({dock}, {dock->height() + missing}, Qt::Vertical);
+    });
     return true;
 }
 

@@ -5,6 +5,7 @@
 #include "app/gui/panels/plots/plot_panel.h"
 #include "app/gui/panels/view/scene_view.h"
 #include "app/gui/shell/exercise_actions.h"
+#include "app/gui/shell/help_dialogs.h"
 #include "app/gui/shell/keys_dialog.h"
 #include "app/gui/shell/main_window.h"
 #include "app/gui/shell/parameter_bar.h"
@@ -173,6 +174,11 @@ ShellActions::ShellActions(MainWindow* window, ExerciseActions* exercise)
     connect(quit, &QAction::triggered, w, &QWidget::close);
     auto* keys = add(tr("&Keys…"), "actionKeys", {QKeySequence(Qt::Key_F1)});
     connect(keys, &QAction::triggered, w, &MainWindow::showKeys);
+    auto* guide = add(tr("&User guide"), "actionUserGuide", {});
+    guide->setToolTip(tr("The user guide (docs/user-guide.md), with screenshots"));
+    connect(guide, &QAction::triggered, w, [w] { showUserGuide(w); });
+    auto* about = add(tr("&About Rigid Body Workbook"), "actionAbout", {});
+    connect(about, &QAction::triggered, w, [w] { showAbout(w); });
 
     QMenu* fileMenu = w->menuBar()->addMenu(tr("&File"));
     createFileActions(fileMenu);   // open, recent, save
@@ -217,7 +223,10 @@ ShellActions::ShellActions(MainWindow* window, ExerciseActions* exercise)
     followMenu_->setObjectName("followMenu");
     viewMenu->addSeparator();
     for (QDockWidget* dock : w->findChildren<QDockWidget*>()) viewMenu->addAction(dock->toggleViewAction());
-    w->menuBar()->addMenu(tr("&Help"))->addAction(keys);
+    QMenu* helpMenu = w->menuBar()->addMenu(tr("&Help"));
+    helpMenu->addActions({guide, keys});
+    helpMenu->addSeparator();
+    helpMenu->addAction(about);
 
     QToolBar* toolBar = w->addToolBar(tr("Simulation"));
     toolBar->setObjectName("simulationToolBar");
@@ -238,7 +247,12 @@ void ShellActions::createFileActions(QMenu* fileMenu)
     connect(w->sceneFiles(), &SceneFiles::recentChanged, this, &ShellActions::updateRecentMenu);
     auto* save = add(tr("&Save scene"), "actionSaveScene", {QKeySequence::Save});
     connect(save, &QAction::triggered, w, &MainWindow::saveScene);
-    auto* saveAs = add(tr("Save scene &as…"), "actionSaveSceneAs", {QKeySequence::SaveAs});
+    // QKeySequence::SaveAs is empty on a desktop without a key theme (Xvfb, a bare
+    // window manager): Ctrl+Shift+S, as the user guide says, in any case.
+    QList<QKeySequence> saveAsKeys = QKeySequence::keyBindings(QKeySequence::SaveAs);
+    const QKeySequence ctrlShiftS(Qt::CTRL | Qt::SHIFT | Qt::Key_S);
+    if (!saveAsKeys.contains(ctrlShiftS)) saveAsKeys.prepend(ctrlShiftS);
+    auto* saveAs = add(tr("Save scene &as…"), "actionSaveSceneAs", saveAsKeys);
     connect(saveAs, &QAction::triggered, w, &MainWindow::saveSceneAs);
     auto* fromLesson = add(tr("&New scene from this lesson"), "actionNewSceneFromLesson", {QKeySequence::New});
     connect(fromLesson, &QAction::triggered, w, &MainWindow::newSceneFromLesson);

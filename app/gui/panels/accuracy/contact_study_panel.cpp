@@ -36,6 +36,8 @@ namespace rbw {
 
 namespace {
 
+constexpr int kDtColumn = 3;   // contactStudyCsvHeader(): problem, model, iterations, dt, ...
+
 QString metricTitle(ContactMetric m)
 {
     switch (m) {
@@ -62,8 +64,33 @@ std::optional<double> metricOf(const lab::ContactStudyRow& row, ContactMetric m)
 
 QString seriesName(const lab::ContactStudyRow& row)
 {
+    // Told apart by their first words: the legend elides the end of a long name.
     if (row.model == sceneWord(ManifoldSolver::SoftStep)) return QObject::tr("soft step, %1 substeps").arg(row.iterations);
-    return row.model == "course" ? QObject::tr("course") : QObject::tr("manifold ×%1").arg(row.iterations);
+    return row.model == "course" ? QObject::tr("course model (one impulse per corner)")
+                                 : (row.iterations == 1 ? QObject::tr("manifold, 1 solver iteration")
+                                                        : QObject::tr("manifold, %1 solver iterations").arg(row.iterations));
+}
+
+// A step size as a student writes it: 1/30 when 1/h is a whole number (to 1e-9),
+// otherwise 4 significant digits; never 0.033333333333333333.
+QString shortStep(double h)
+{
+    const double perSecond = 1.0 / h;
+    const double whole = std::round(perSecond);
+    if (whole >= 1.0 && std::abs(perSecond - whole) <= 1e-9 * whole) return QStringLiteral("1/%1").arg(whole, 0, 'f', 0);
+    return QString::number(h, 'g', 4);
+}
+
+// A table cell: the CSV's field (every digit, in the tooltip and Qt::UserRole), shown
+// with 4 significant digits (whole numbers above 10^4 without decimals).
+QString shortField(const QString& field, bool isStep)
+{
+    bool ok = false;
+    const double v = field.toDouble(&ok);
+    if (!ok || field.isEmpty()) return field;
+    if (isStep && v > 0.0) return shortStep(v);
+    if (std::abs(v) >= 1e4) return QString::number(v, 'f', 0);
+    return QString::number(v, 'g', 4);
 }
 
 // "0.01" or a fraction "1/60" (h = 1/60 s is the usual game step), read as the check
@@ -136,9 +163,19 @@ ContactStudyPanel::ContactStudyPanel(QWidget* parent) : QWidget(parent)
     buttons->addWidget(exportCsv_);
     buttons->addStretch();
 
+    intro_ = new QLabel(
+        tr("<b>Do the boxes come to rest?</b> Each problem is run with the <i>course model</i> (one impulse per "
+           "corner, lessons 3–7) and with the <i>manifold model</i> of lesson 11 at each number of solver "
+           "iterations, at each step h. The chart puts each run's error against the time its steps took: "
+           "<b>lower is more accurate, further left is cheaper</b>; one line per model through its step sizes. "
+           "The table has every number (hover a cell for all its digits)."));
+    intro_->setObjectName("contactStudyIntro");
+    intro_->setWordWrap(true);
+
     chart_ = new QChart;
-    chart_->setTitle(tr("Contacts: error against the cost of reaching T (manifold ×n: n solver iterations)"));
-    chart_->legend()->setAlignment(Qt::AlignBottom);
+    chart_->setTitle(tr("Contacts: error against the cost of reaching T"));
+    // On the right, one entry per line: each name is read whole.
+    chart_->legend()->setAlignment(Qt::AlignRight);
     auto* chartView = new QChartView(chart_);
     chartView->setRenderHint(QPainter::Antialiasing);
     chartView->setMinimumHeight(260);
@@ -150,6 +187,7 @@ ContactStudyPanel::ContactStudyPanel(QWidget* parent) : QWidget(parent)
     tableView_->setMinimumHeight(140);
 
     auto* layout = new QVBoxLayout(this);
+    layout->addWidget(intro_);
     layout->addLayout(form);
     layout->addLayout(buttons);
     layout->addWidget(progress_);
@@ -243,6 +281,8 @@ bool ContactStudyPanel::isRunning() const { return watcher_->isRunning(); }
 
 QString ContactStudyPanel::statusText() const { return status_->text(); }
 
+QString ContactStudyPanel::introText() const { return intro_->text(); }
+
 int ContactStudyPanel::seriesCount() const { return static_cast<int>(chart_->series().size()); }
 
 bool ContactStudyPanel::exportCsv(const QString& path, QString* error) const
@@ -273,11 +313,15 @@ void ContactStudyPanel::fillTable()
     table_->clear();
     table_->setHorizontalHeaderLabels(contactStudyCsvHeader());
     const QStringList lines = contactStudyToCsv(result_).split('\n', Qt::SkipEmptyParts);
-    // The CSV's own fields (the one formatting of the numbers), without its header.
+    // The CSV's own fields (the one formatting of the numbers), without its header,
+    // shown short (h as 1/30); every digit in the tooltip.
     for (int i = 1; i < lines.size(); ++i) {
         QList<QStandardItem*> items;
-        for (const QString& field : lines[i].split(',')) {
-            auto* item = new QStandardItem(field);
+        const QStringList fields = lines[i].split(',');
+        for (int c = 0; c < fields.size(); ++c) {
+            auto* item = new QStandardItem(shortField(fields[c], c == kDtColumn));
+            item->setData(fields[c], Qt::UserRole);
+            item->setToolTip(fields[c]);
             item->setEditable(false);
             items << item;
         }

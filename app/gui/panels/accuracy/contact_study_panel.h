@@ -6,6 +6,10 @@
 // step sizes, so a student sees what each iteration buys. A table holds every number
 // of the runs (the same columns as `rbw contact-study`'s CSV), which Export writes.
 //
+// The tab explains itself at its top; the legend names each line's model and
+// iterations in full; the table shows each number short (h as 1/30) with every digit
+// in its tooltip.
+//
 // The study runs off the GUI thread (QtConcurrent::run); Cancel sets an atomic flag the
 // runner checks every step. The panel shows numbers from the runner only.
 #pragma once
@@ -58,6 +62,7 @@ public:
     QStandardItemModel* tableModel() const { return table_; }
     QString statusText() const;
     int seriesCount() const;   // lines drawn, one per model and iteration count
+    QString introText() const;   // the tab's explanation at its top
 
     bool exportCsv(const QString& path, QString* error = nullptr) const;
 
@@ -83,6 +88,7 @@ private:
     QPushButton* exportCsv_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QLabel* status_ = nullptr;
+    QLabel* intro_ = nullptr;   // what the tab is for, at its top
     QChart* chart_ = nullptr;
     QStandardItemModel* table_ = nullptr;
     QTableView* tableView_ = nullptr;

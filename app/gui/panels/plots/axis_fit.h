@@ -3,7 +3,12 @@
 // "…" on every y tick, and so had its PNG). So labels are never truncated, and a
 // value axis gets only as many ticks as its length holds with a label height of
 // room between them (at least 2, at most `wanted`).
+//
+// applyNiceRange() puts an axis on nice ticks (plot_axis_range.h: multiples of 1, 2
+// or 5 x 10^k, the axis ending on a tick), as many as its length holds.
 #pragma once
+
+#include "app/gui/panels/plots/plot_axis_range.h"
 
 #include <QFontMetrics>
 #include <QValueAxis>
@@ -27,6 +32,16 @@ inline int fittingTickCount(double pixels, const QFont& font, int wanted, bool v
 inline void keepLabelsWhole(QValueAxis* axis)
 {
     axis->setTruncateLabels(false);
+}
+
+// The axis shows `wanted` on nice ticks; pixels: the axis' length on screen.
+inline void applyNiceRange(QValueAxis* axis, const ValueRange& wanted, double pixels, int maxTicks)
+{
+    const bool vertical = axis->orientation() == Qt::Vertical;
+    const NiceTicks ticks = niceTicks(wanted, fittingTickCount(pixels, axis->labelsFont(), maxTicks, vertical));
+    axis->setRange(ticks.min, ticks.max);
+    axis->setTickCount(ticks.count);
+    axis->setLabelFormat(axisLabelFormat(ticks.min, ticks.max, ticks.step));
 }
 
 } // namespace rbw

@@ -8,6 +8,7 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QCoreApplication>
 #include <QImage>
 #include <QLineSeries>
 #include <QPainter>
@@ -177,24 +178,34 @@ void BodyPlotPanel::refreshNow()
     }
     const ValueRange xr = timeAxisRange(n > 0 ? t_.back() : 1.0);
     const QRectF area = c.chart->plotArea();
-    c.x->setTickCount(fittingTickCount(area.width(), c.x->labelsFont(), 5, false));
-    c.x->setRange(xr.min, xr.max);
-    const ValueRange yr = n > 0 ? valueAxisRange(lo, hi) : valueAxisRange(0.0, 0.0);
-    c.y->setTickCount(fittingTickCount(area.height(), c.y->labelsFont(), 5, true));
-    c.y->setRange(yr.min, yr.max);
+    applyNiceRange(c.x, xr, area.width(), 5);
+    // No sample yet (before the first step): [0, 1], not a range around nothing.
+    const ValueRange yr = n > 0 ? valueAxisRange(lo, hi) : ValueRange{0.0, 1.0};
+    applyNiceRange(c.y, yr, area.height(), 5);
 }
 
 bool BodyPlotPanel::exportPng(const QString& path, QString* error)
 {
     refreshNow();
-    QChartView* view = charts_[tabs_->currentIndex()].view;
+    const int q = tabs_->currentIndex();
+    QChartView* view = charts_[q].view;
+    QChart* chart = charts_[q].chart;
     const QSize size = view->size().expandedTo(QSize(480, 320));
     QImage image(size * 2, QImage::Format_ARGB32);
     image.setDevicePixelRatio(2.0);
     image.fill(Qt::white);
+    // A title in the image only, so the PNG says what it shows.
+    const QFont screenFont = chart->titleFont();
+    QFont bold = screenFont;
+    bold.setBold(true);
+    chart->setTitleFont(bold);
+    chart->setTitle(QStringLiteral("%1: %2").arg(QString::fromUtf8(kTitles[q]), QString::fromUtf8(kAxisTitles[q])));
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
     QPainter painter(&image);
     view->render(&painter, QRectF(QPointF(0, 0), QSizeF(size)));
     painter.end();
+    chart->setTitle(QString());
+    chart->setTitleFont(screenFont);
     // The PNG appears complete or not at all (app/output/atomic_file.h).
     QByteArray png;
     QBuffer buffer(&png);

@@ -14,6 +14,8 @@
 #include <QObject>
 #include <QPainter>
 
+#include <algorithm>
+
 namespace rbw {
 
 void exportPlotInteractively(QWidget* parent, PlotExportFormat format, const QString& defaultName,
@@ -30,8 +32,26 @@ void exportPlotInteractively(QWidget* parent, PlotExportFormat format, const QSt
     }
 }
 
-bool writeChartPng(QChart* chart, bool onScreen, const QString& path, QString* error)
+bool writeChartPng(QChart* chart, bool onScreen, const QString& path, QString* error, const QString& title)
 {
+    // The title for the image only: set now, the chart's own back on return.
+    struct TitleForImage {
+        QChart* chart;
+        QString saved;
+        QFont savedFont;
+        ~TitleForImage()
+        {
+            chart->setTitle(saved);
+            chart->setTitleFont(savedFont);
+        }
+    } restore{chart, chart->title(), chart->titleFont()};
+    if (!title.isEmpty()) {
+        QFont bold = chart->titleFont();
+        bold.setBold(true);
+        bold.setPointSizeF(std::max(bold.pointSizeF(), 11.0));
+        chart->setTitleFont(bold);
+        chart->setTitle(title);
+    }
     constexpr qreal kPixelRatio = 2.0;
     auto fail = [error](const QString& text) {
         if (error != nullptr) *error = text;

@@ -23,6 +23,8 @@ void exportPlotInteractively(QWidget* parent, PlotExportFormat format, const QSt
 // out on screen (`onScreen` false: a closed dock) is given 800 x 500 first; the posted
 // layout is done first, so the axes are as they are now. False, with the file and the
 // reason in `error`, when the chart has no size or the file cannot be written.
-bool writeChartPng(QChart* chart, bool onScreen, const QString& path, QString* error);
+// `title` (what the plot shows, "Energy", "R₂₂ (racket)") is drawn above the plot in
+// the image, so a PNG on its own says what it is; the chart on screen keeps its own.
+bool writeChartPng(QChart* chart, bool onScreen, const QString& path, QString* error, const QString& title = {});
 
 } // namespace rbw

@@ -421,12 +421,7 @@ void PlotPanel::updateAxes(PlotChart chart)
         if (!force && inside && !shrunk) return;
         input = wanted;
         const bool vertical = axis->orientation() == Qt::Vertical;
-        axis->setTickCount(fittingTickCount(vertical ? area.height() : area.width(), axis->labelsFont(),
-                                            kAxisTickCount, vertical));
-        axis->setRange(wanted.min, wanted.max);
-        axis->applyNiceNumbers();
-        const double step = (axis->max() - axis->min()) / std::max(1, axis->tickCount() - 1);
-        axis->setLabelFormat(axisLabelFormat(axis->min(), axis->max(), step));
+        applyNiceRange(axis, wanted, vertical ? area.height() : area.width(), kAxisTickCount);
     };
     apply(parts.xAxis, parts.xInput, xWanted, !parts.hasInput);
     apply(parts.yAxis, parts.yInput, yWanted, !parts.hasInput);
@@ -443,7 +438,9 @@ bool PlotPanel::exportPng(const QString& path, QString* error)
 {
     refreshNow();
     ChartParts& parts = charts_[static_cast<std::size_t>(plotIndex(currentChart()))];
-    return writeChartPng(parts.chart, parts.view->isVisible(), path, error);
+    const PlotChartInfo& info = plotChartInfo(currentChart());
+    return writeChartPng(parts.chart, parts.view->isVisible(), path, error,
+                         QStringLiteral("%1: %2").arg(tr(info.tabTitle), QString::fromUtf8(info.axisTitle)));
 }
 
 bool PlotPanel::exportCsv(const QString& path, QString* error)

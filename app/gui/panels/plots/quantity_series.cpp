@@ -59,6 +59,27 @@ QStringList QuantitySeries::componentNames() const
     }
 }
 
+QString QuantitySeries::componentSymbol(int component) const
+{
+    const QStringList names = componentNames();
+    if (component < 0 || component >= names.size() || names[component].isEmpty()) return symbol();
+    if (kind_ != 3) return QStringLiteral("%1_%2").arg(symbol(), names[component]);
+    // Row and column as subscript digits: R₂₂.
+    QString sub;
+    for (QChar c : names[component]) sub += QChar(0x2080 + (c.unicode() - '0'));
+    return symbol() + sub;
+}
+
+QString QuantitySeries::componentLabel(int component) const
+{
+    const QString& sym = symbol();
+    const QString named = componentSymbol(component);
+    // "ω (racket)" -> "ω_y (racket)"; a label not starting with the symbol keeps it
+    // whole and names the component after it.
+    if (label_.startsWith(sym)) return named + label_.mid(sym.size());
+    return named == sym ? label_ : QStringLiteral("%1 %2").arg(label_, named);
+}
+
 bool QuantitySeries::append(const StepTrace& trace)
 {
     if (!samples_.empty() && trace.step <= samples_.back().step) return false;

@@ -58,6 +58,11 @@ public:
     // {11,12,...,33}; empty until the first sample.
     QStringList componentNames() const;
     int componentCount() const { return componentCount_; }
+    // A component's name after the quantity catalogue's symbol: ω_y for a vector or
+    // a quaternion, R₂₂ for a matrix (row, column), the symbol for a scalar; and the
+    // label with that symbol in place of the quantity's ("ω_y (racket)").
+    QString componentSymbol(int component) const;
+    QString componentLabel(int component) const;
 
     // Reads the entry from a step's trace; false (nothing stored) if the trace does
     // not hold it, a value is not finite, or the step is not after the last sample.

@@ -8,6 +8,9 @@
 
 #include <QAbstractItemModelTester>
 #include <QChart>
+#include <QLegend>
+#include <QLegendMarker>
+#include <QSet>
 #include <QFile>
 #include <QSignalSpy>
 #include <QStandardItemModel>
@@ -29,6 +32,7 @@ void TestContactStudyPanel::smallStudy()
     QAbstractItemModelTester tester(panel.tableModel(), QAbstractItemModelTester::FailureReportingMode::QtTest);
     panel.resize(900, 800);
     panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
     panel.setProblem(lab::ContactProblem::RestingBox);
     panel.setIterationsText(QStringLiteral("1, 4"));
     panel.setDtText(QStringLiteral("1/60, 0.0333333333333333333"));   // a fraction reads as one
@@ -56,10 +60,36 @@ void TestContactStudyPanel::smallStudy()
         QCOMPARE(panel.result().rows[i].steps, direct.rows[i].steps);
         QCOMPARE(*panel.result().rows[i].drift, *direct.rows[i].drift);
         QCOMPARE(panel.result().rows[i].energyGained, direct.rows[i].energyGained);
-        // the table shows the CSV's field for it (column 8: drift)
-        QCOMPARE(panel.tableModel()->item(int(i), 8)->text(),
+        // the table holds the CSV's field for it (column 8: drift), every digit, and
+        // shows it with 4 significant digits
+        const QStandardItem* drift = panel.tableModel()->item(int(i), 8);
+        QCOMPARE(drift->data(Qt::UserRole).toString(),
                  QString::number(*direct.rows[i].drift, 'g', QLocale::FloatingPointShortest));
+        QCOMPARE(drift->toolTip(), drift->data(Qt::UserRole).toString());
+        QCOMPARE(drift->text(), QString::number(*direct.rows[i].drift, 'g', 4));
+        // h as typed: 1/60 and 0.0333333333333333333 (1/h = 30 to 1e-16) read 1/60, 1/30.
+        const QString h = panel.tableModel()->item(int(i), 3)->text();
+        QCOMPARE(h, direct.rows[i].dt < 0.02 ? QStringLiteral("1/60") : QStringLiteral("1/30"));
     }
+    // The legend names each line's model whole, each name different, and the tab says
+    // what it is for.
+    QApplication::processEvents();   // the chart lays out its new legend
+    QSet<QString> names;
+    const QLegend* legend = panel.chart()->legend();
+    const QFontMetrics fm(legend->font());
+    for (const QLegendMarker* marker : legend->markers()) {
+        names.insert(marker->label());
+        QVERIFY2(fm.horizontalAdvance(marker->label()) < legend->geometry().width(),
+                 qPrintable(QStringLiteral("%1: %2 px, the legend %3 px")
+                                .arg(marker->label())
+                                .arg(fm.horizontalAdvance(marker->label()))
+                                .arg(legend->geometry().width())));
+    }
+    QCOMPARE(names.size(), legend->markers().size());
+    QVERIFY(names.contains(QStringLiteral("course model (one impulse per corner)")));
+    QVERIFY(names.contains(QStringLiteral("manifold, 4 solver iterations")));
+    QVERIFY(panel.introText().contains(QStringLiteral("course model")));
+    QVERIFY(panel.introText().contains(QStringLiteral("manifold model")));
     // One line per model and iteration count whose drift is above 0: the course model's
     // and the manifold's (a run that holds the box exactly still is not drawn, and the
     // status says so).

@@ -54,6 +54,9 @@ private slots:
     void valueAxisRange_data();
     void valueAxisRange();
     void timeAxisRange();
+    void niceTicks_data();
+    void niceTicks();
+    void componentNamesFollowTheCatalogue();
     void strideKeepsWithinBudget_data();
     void strideKeepsWithinBudget();
     void decimationKeepsTheEnvelope();
@@ -239,16 +242,20 @@ void TestPlotData::valueAxisRange_data()
     QTest::newRow("negative -50..-20") << -50.0 << -20.0 << -51.5 << -18.5;
     // [1, 1.001]: span 1e-3 is far above round-off (1e-9 * 1.001): pad 5e-5.
     QTest::newRow("small but real change") << 1.0 << 1.001 << 1.0 - 5e-5 << 1.001 + 5e-5;
-    // Constant: v ± max(1e-9, 0.05 |v|). 3 -> ±0.15; -200 -> ±10; 0 -> ±1e-9.
+    // Constant: v ± 0.05 |v|. 3 -> ±0.15; -200 -> ±10.
     QTest::newRow("constant 3") << 3.0 << 3.0 << 2.85 << 3.15;
     QTest::newRow("constant -200") << -200.0 << -200.0 << -210.0 << -190.0;
-    QTest::newRow("constant 0") << 0.0 << 0.0 << -1e-9 << 1e-9;
+    // 0 (a momentum of 0, the empty per-body plot before the first step) is a flat
+    // line at 0 on [-1, 1], not an axis of "±1e-09" (issue 20).
+    QTest::newRow("constant 0") << 0.0 << 0.0 << -1.0 << 1.0;
     // Round-off (lesson 3's kinetic energy 1.5 -> 1.4999999999999996) counts as
     // constant: centre 1.4999999999999998, ±0.075.
     QTest::newRow("round-off around 1.5") << 1.4999999999999996 << 1.5 << 1.4999999999999998 - 0.075
                                           << 1.4999999999999998 + 0.075;
-    // Round-off around 0 is drawn flat: [0, 1.05e-17] widened to ±1e-9 about its centre.
-    QTest::newRow("round-off around 0") << 0.0 << 1e-17 << 5.25e-18 - 1e-9 << 5.25e-18 + 1e-9;
+    // Round-off around 0 (every |value| <= 1e-9) is 0: the same [-1, 1].
+    QTest::newRow("round-off around 0") << 0.0 << 1e-17 << -1.0 << 1.0;
+    // Just above the round-off bound it is data: [0, 2e-9] padded 1e-10 above.
+    QTest::newRow("tiny but real") << 0.0 << 2e-9 << 0.0 << 2.1e-9;
 }
 
 void TestPlotData::valueAxisRange()
@@ -263,6 +270,80 @@ void TestPlotData::valueAxisRange()
     RBW_COMPARE_NEAR(r.max, expectedMax, tol);
     QVERIFY(r.max - r.min > 0.0);
     QVERIFY(r.min <= lo && r.max >= hi);
+}
+
+// Ticks at multiples of 1, 2 or 5 x 10^k, the axis ending on ticks, at most
+// maxTicks: the smallest such step that fits (worked by hand in each row).
+void TestPlotData::niceTicks_data()
+{
+    QTest::addColumn<double>("lo");
+    QTest::addColumn<double>("hi");
+    QTest::addColumn<int>("maxTicks");
+    QTest::addColumn<double>("min");
+    QTest::addColumn<double>("max");
+    QTest::addColumn<double>("step");
+    QTest::addColumn<int>("count");
+    // [0, 6.4], 5 ticks: step 1 needs 0..7 (8 ticks), step 2 needs 0..8 (5): 0, 2, 4, 6, 8
+    // (Qt's applyNiceNumbers gave 0, 1.6, 3.2, 4.8, 6.4 here).
+    QTest::newRow("0..6.4") << 0.0 << 6.4 << 5 << 0.0 << 8.0 << 2.0 << 5;
+    // [0, 2.04] (t up to 2 s plus 2 %), 6 ticks: 0.2 needs 12, 0.5 needs 0..2.5 (6).
+    QTest::newRow("time to 2 s") << 0.0 << 2.04 << 6 << 0.0 << 2.5 << 0.5 << 6;
+    // [-1, 1] (a quantity at 0), 5 ticks: 0.2 needs 11, 0.5 needs 5.
+    QTest::newRow("zero line") << -1.0 << 1.0 << 5 << -1.0 << 1.0 << 0.5 << 5;
+    // [0.95, 1.05] (constant 1), 5 ticks: 0.01 needs 11, 0.02 needs 0.94..1.06 (7),
+    // 0.05 needs 0.95..1.05 (3; 0.95 / 0.05 = 18.999999999999996 is tick 19).
+    QTest::newRow("constant 1") << 0.95 << 1.05 << 5 << 0.95 << 1.05 << 0.05 << 3;
+    // [-0.315, 0.315] (lesson 9's R entries), 6 ticks: 0.1 needs -0.4..0.4 (9), 0.2 needs
+    // -0.4..0.4 (5).
+    QTest::newRow("crossing 0") << -0.315 << 0.315 << 6 << -0.4 << 0.4 << 0.2 << 5;
+}
+
+void TestPlotData::niceTicks()
+{
+    QFETCH(double, lo);
+    QFETCH(double, hi);
+    QFETCH(int, maxTicks);
+    QFETCH(double, min);
+    QFETCH(double, max);
+    QFETCH(double, step);
+    QFETCH(int, count);
+    const rbw::NiceTicks t = rbw::niceTicks(ValueRange{lo, hi}, maxTicks);
+    RBW_COMPARE_NEAR(t.min, min, 1e-12);
+    RBW_COMPARE_NEAR(t.max, max, 1e-12);
+    RBW_COMPARE_NEAR(t.step, step, 1e-12);
+    QCOMPARE(t.count, count);
+    // The invariants every row must meet: the data inside (to the 1e-9 of a step that
+    // counts as on a tick), ticks that fit, 1-2-5 steps.
+    QVERIFY(t.min <= lo + 1e-9 * t.step && t.max >= hi - 1e-9 * t.step);
+    QVERIFY(t.count <= maxTicks);
+    RBW_COMPARE_NEAR(t.min + (t.count - 1) * t.step, t.max, 1e-12);
+    const double mantissa = t.step / std::pow(10.0, std::floor(std::log10(t.step) + 1e-12));
+    QVERIFY2(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 || std::abs(mantissa - 5) < 1e-9,
+             qPrintable(QString::number(t.step)));
+}
+
+// The names students read in the legend: the catalogue's symbol with the
+// component, R₂₂ for a matrix entry, ω_y for a vector's.
+void TestPlotData::componentNamesFollowTheCatalogue()
+{
+    rbw::QuantitySeries r(rbw::QuantityKey{"rotation_matrix", 0, -1}, QStringLiteral("R (racket)"), QString(), "R");
+    rbw::QuantitySeries w(rbw::QuantityKey{"angular_velocity", 0, -1}, QStringLiteral("ω (racket)"), "rad/s",
+                          QStringLiteral("ω"));
+    rbw::StepTrace t;
+    t.step = 0;
+    t.time = 0.01;
+    rbw::Mat3 R;
+    R << 1, 2, 3, 4, 5, 6, 7, 8, 9;
+    t.add(rbw::q::rotation_matrix, 0, R, -1);
+    t.add(rbw::q::angular_velocity, 0, Vec3(1, 2, 3), -1);
+    QVERIFY(r.append(t));
+    QVERIFY(w.append(t));
+    QCOMPARE(r.componentSymbol(4), QStringLiteral("R₂₂"));
+    QCOMPARE(r.componentLabel(4), QStringLiteral("R₂₂ (racket)"));
+    QCOMPARE(r.samples()[0].values[4], 5.0);   // row 2, column 2, as R(1, 1) in Eigen's 0-based terms
+    QCOMPARE(r.componentSymbol(5), QStringLiteral("R₂₃"));
+    QCOMPARE(w.componentLabel(1), QStringLiteral("ω_y (racket)"));
+    QCOMPARE(w.componentSymbol(-1), QStringLiteral("ω"));   // no component: the symbol
 }
 
 void TestPlotData::timeAxisRange()

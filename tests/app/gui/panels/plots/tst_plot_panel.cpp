@@ -387,8 +387,9 @@ void TestPlotPanel::axisRangeCoversVisibleData()
     panel.refreshNow();
     const double lo = *std::min_element(values.begin(), values.end());
     const double hi = *std::max_element(values.begin(), values.end());
-    // What must be covered: 5 % of the span beyond the data, or v ± max(1e-9, 0.05|v|).
-    const double pad = constant ? std::max(1e-9, 0.05 * std::abs(lo)) : 0.05 * (hi - lo);
+    // What must be covered (plot_axis_range.h): 5 % beyond the data, v ± 0.05|v|, or [-1, 1] for 0.
+    const bool zero = std::max(std::abs(lo), std::abs(hi)) <= 1e-9;
+    const double pad = zero ? 1.0 : (constant ? 0.05 * std::abs(lo) : 0.05 * (hi - lo));
     // (The padding stops at 0 for data that does not cross it.)
     const double needMin = (!constant && lo >= 0.0) ? std::max(0.0, lo - pad) : lo - pad;
     const double needMax = (!constant && hi <= 0.0) ? std::min(0.0, hi + pad) : hi + pad;
