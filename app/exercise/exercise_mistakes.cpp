@@ -191,7 +191,7 @@ QString ExerciseMistakeReport::markdown() const
         table += "| `" + m.model + "` | " + m.shownIn.join(", ") + " | " + same.join(", ") + " |\n";
     }
     s += table;
-    s += "\nCannot show: " + (cannot.isEmpty() ? QStringLiteral("none") : cannot.join(", ")) + ".\n";
+    s += "\nCannot show: " + (cannot.isEmpty() ? QStringLiteral("nothing") : cannot.join(", ")) + ".\n";
     return s;
 }
 

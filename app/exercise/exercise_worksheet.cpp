@@ -46,10 +46,11 @@ QString label(const QString& key)
 QString tableOf(const QString& title, const QJsonArray& items)
 {
     if (items.isEmpty()) return QString();
+    const QString nameKey = sceneformat::key(sceneformat::Key::Name);
     QStringList keys;
     for (const QJsonValue& r : items) {
         for (const QString& k : r.toObject().keys()) {
-            if (!keys.contains(k) && k != QLatin1String("name")) keys << k;
+            if (!keys.contains(k) && k != nameKey) keys << k;
         }
     }
     // Full width, the labels' column wide enough for "restitution threshold": a PDF
@@ -57,7 +58,7 @@ QString tableOf(const QString& title, const QJsonArray& items)
     const int itemWidth = static_cast<int>(78 / items.size());
     QString html = "<h3>" + title.toHtmlEscaped() + "</h3>\n<table width=\"100%\" style=\"font-size:9pt\">\n<tr><th width=\"22%\"></th>";
     for (qsizetype i = 0; i < items.size(); ++i) {
-        const QString name = items[i].toObject().value(QLatin1String("name")).toString();
+        const QString name = items[i].toObject().value(nameKey).toString();
         html += "<th width=\"" + QString::number(itemWidth) + "%\">" + (name.isEmpty() ? QString::number(i) : name).toHtmlEscaped() + "</th>";
     }
     html += "</tr>\n";
