@@ -39,29 +39,29 @@ struct SceneValue {
 
 SceneValue sceneValue(const SceneDef& scene, const QString& key, const QString& body, int index, QString* problem)
 {
-    if (key == QLatin1String("h")) return {{scene.dt}};
-    if (key == QLatin1String("g")) return {components(scene.g_W)};
-    if (key == QLatin1String("steps")) return {{static_cast<double>(scene.steps)}};
-    if (key == QLatin1String("restitution")) return {{scene.restitution}};
-    if (key == QLatin1String("friction")) return {{scene.friction}};
-    if (key == QLatin1String("force") || key == QLatin1String("point")) {
+    if (key == QLatin1String("scene:h")) return {{scene.dt}};
+    if (key == QLatin1String("scene:g")) return {components(scene.g_W)};
+    if (key == QLatin1String("scene:steps")) return {{static_cast<double>(scene.steps)}};
+    if (key == QLatin1String("scene:restitution")) return {{scene.restitution}};
+    if (key == QLatin1String("scene:friction")) return {{scene.friction}};
+    if (key == QLatin1String("scene:force") || key == QLatin1String("scene:point")) {
         if (index < 0 || index >= static_cast<int>(scene.forces.size())) {
             *problem = QStringLiteral("no force #%1 in this scene").arg(index);
             return {};
         }
         const ForceDef& f = scene.forces[index];
-        return {components(key == QLatin1String("force") ? f.f_W : f.p_W)};
+        return {components(key == QLatin1String("scene:force") ? f.f_W : f.p_W)};
     }
-    if (key == QLatin1String("torque")) {
+    if (key == QLatin1String("scene:torque")) {
         if (index < 0 || index >= static_cast<int>(scene.torques.size())) {
             *problem = QStringLiteral("no torque #%1 in this scene").arg(index);
             return {};
         }
         return {components(scene.torques[index].q_W)};
     }
-    static const QStringList bodyKeys{"mass", "size", "position", "velocity", "omega", "orientation", "degrees"};
+    static const QStringList bodyKeys{"scene:mass", "scene:size", "scene:position", "scene:velocity", "scene:omega", "scene:orientation", "scene:degrees"};
     if (!bodyKeys.contains(key)) {
-        *problem = QStringLiteral("unknown key '%1'").arg(key);
+        *problem = QStringLiteral("unknown key '%1'").arg(key.mid(6));
         return {};
     }
     const int b = scene.bodyIndex(body.toStdString());
@@ -70,12 +70,12 @@ SceneValue sceneValue(const SceneDef& scene, const QString& key, const QString& 
         return {};
     }
     const BodyDef& d = scene.bodies[b];
-    if (key == QLatin1String("mass")) return {{d.mass}};
-    if (key == QLatin1String("size")) return {components(d.size)};
-    if (key == QLatin1String("position")) return {components(d.x0_W)};
-    if (key == QLatin1String("velocity")) return {components(d.v0_W)};
-    if (key == QLatin1String("omega")) return {components(d.omega0_W)};
-    if (key == QLatin1String("orientation")) return {{d.q0_WB.w(), d.q0_WB.x(), d.q0_WB.y(), d.q0_WB.z()}, true};
+    if (key == QLatin1String("scene:mass")) return {{d.mass}};
+    if (key == QLatin1String("scene:size")) return {components(d.size)};
+    if (key == QLatin1String("scene:position")) return {components(d.x0_W)};
+    if (key == QLatin1String("scene:velocity")) return {components(d.v0_W)};
+    if (key == QLatin1String("scene:omega")) return {components(d.omega0_W)};
+    if (key == QLatin1String("scene:orientation")) return {{d.q0_WB.w(), d.q0_WB.x(), d.q0_WB.y(), d.q0_WB.z()}, true};
     // degrees: the angle of the turn the scene file gives, 2 acos|w|.
     return {{2.0 * std::acos(std::min(1.0, std::abs(d.q0_WB.w()))) * 180.0 / std::numbers::pi}};
 }
@@ -134,7 +134,8 @@ FilledLessonText fillLessonText(const QString& markdown, const SceneDef& scene, 
                 continue;
             }
             ++out.placeholders;
-            const QString key = m.captured(1);
+            // The lesson text's own placeholder names ("scene:mass"), not the scene file's keys.
+            const QString key = QStringLiteral("scene:") + m.captured(1);
             const QString shownPublished = m.captured(5);
             QString problem;
             const SceneValue value = sceneValue(scene, key, m.captured(2), m.captured(3).isEmpty() ? -1 : m.captured(3).toInt(), &problem);
