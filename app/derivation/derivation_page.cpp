@@ -1,5 +1,7 @@
 #include "app/derivation/derivation_page.h"
 
+#include <QRegularExpression>
+
 namespace rbw {
 
 QString defaultKatexUrl()
@@ -189,13 +191,30 @@ QString rowLatex(const QString& formula, const QString& substituted, const QStri
            QStringLiteral(" \\end{aligned}");
 }
 
+QString texExponents(const QString& latex)
+{
+    // A number in e-notation (not a letter or command before it, no letter after it).
+    static const QRegularExpression e(QStringLiteral(R"((?<![A-Za-z0-9.#\\])(\d+(?:\.\d+)?)e([+-]?)0*(\d+)(?![A-Za-z]))"));
+    QString out;
+    qsizetype from = 0;
+    QRegularExpressionMatchIterator it = e.globalMatch(latex);
+    while (it.hasNext()) {
+        const QRegularExpressionMatch m = it.next();
+        out += latex.mid(from, m.capturedStart() - from);
+        const QString sign = m.captured(2) == QLatin1String("-") ? QStringLiteral("-") : QString();
+        out += QStringLiteral("%1 \\cdot 10^{%2%3}").arg(m.captured(1), sign, m.captured(3));
+        from = m.capturedEnd();
+    }
+    return out + latex.mid(from);
+}
+
 QString rowHtml(const QString& latex, const QString& inlineLatex)
 {
     if (inlineLatex.isEmpty()) {
-        return QStringLiteral("<div class=\"row\"><div class=\"tex display\">%1</div></div>\n").arg(htmlEscape(latex));
+        return QStringLiteral("<div class=\"row\"><div class=\"tex display\">%1</div></div>\n").arg(htmlEscape(texExponents(latex)));
     }
     return QStringLiteral("<div class=\"row\"><div class=\"tex display\" data-inline=\"%1\">%2</div></div>\n")
-        .arg(htmlEscape(inlineLatex), htmlEscape(latex));
+        .arg(htmlEscape(texExponents(inlineLatex)), htmlEscape(texExponents(latex)));
 }
 
 QString rowInlineLatex(const QString& formula, const QString& substituted, const QString& result)
@@ -208,7 +227,7 @@ QString rowInlineLatex(const QString& formula, const QString& substituted, const
 
 QString inlineMathHtml(const QString& latex)
 {
-    return QStringLiteral("<span class=\"tex\">%1</span>").arg(htmlEscape(latex));
+    return QStringLiteral("<span class=\"tex\">%1</span>").arg(htmlEscape(texExponents(latex)));
 }
 
 QString displayMathHtml(const QString& latex)

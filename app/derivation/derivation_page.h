@@ -36,6 +36,10 @@ QString rowLatex(const QString& formula, const QString& substituted, const QStri
 // The same row on one line: "formula = substituted = result".
 QString rowInlineLatex(const QString& formula, const QString& substituted, const QString& result);
 
+// A number in e-notation as a power of ten: "2.86e-17" becomes 2.86 \cdot 10^{-17}
+// (KaTeX would typeset "2.86e − 17"). rowHtml and inlineMathHtml apply it.
+QString texExponents(const QString& latex);
+
 // <div class="row"><div class="tex display" data-inline="...">stacked</div></div>: the
 // page shows the one-line form where it fits the width and the stacked form where not
 // (and again after a resize). Without inlineLatex the row is always stacked.

@@ -174,17 +174,29 @@ QString TemplateExpander::loop(const TemplateNode& n, const ExpansionContext& ct
     return indices.empty() ? nodes(n.elseChildren, ctx) : html;
 }
 
-// The integrator of the context's body, else the scene's if every body shares it;
-// empty when the bodies of a world-level context have different integrators.
+// The integrator of the context's body, else the one every body shares; empty when the
+// bodies of a world-level context have different integrators. The one that ran this
+// step (tracedIntegrator), else the scene's: switching the integrator after a step does
+// not relabel the step already taken.
 QString TemplateExpander::integratorOf(const ExpansionContext& ctx) const
 {
-    if (ctx.look.body >= 0 && ctx.look.body < static_cast<int>(scene_.bodies.size())) {
-        return QString::fromStdString(scene_.integratorOf(ctx.look.body));
-    }
+    auto ofBody = [this](int b) {
+        const QString scene = QString::fromStdString(scene_.integratorOf(b));
+        const QString traced = tracedIntegrator(trace_, b);
+        // Integrators that share one file (rotation-matrix and its orthonormalised
+        // variant) are one family to the trace: there the scene's name decides.
+        const bool family = scene.startsWith(traced + QLatin1Char('-')) || traced.startsWith(scene + QLatin1Char('-'));
+        return traced.isEmpty() || family ? scene : traced;
+    };
+    if (ctx.look.body >= 0 && ctx.look.body < static_cast<int>(scene_.bodies.size())) return ofBody(ctx.look.body);
+    QString shared;
     for (int b = 0; b < static_cast<int>(scene_.bodies.size()); ++b) {
-        if (scene_.integratorOf(b) != scene_.integrator) return QString();
+        if (scene_.bodies[b].fixed) continue;
+        const QString name = ofBody(b);
+        if (!shared.isEmpty() && name != shared) return QString();
+        shared = name;
     }
-    return QString::fromStdString(scene_.integrator);
+    return shared.isEmpty() ? QString::fromStdString(scene_.integrator) : shared;
 }
 
 // @integration: the current body's integrator's own section (integrator_sections.h),

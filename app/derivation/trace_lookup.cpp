@@ -1,5 +1,7 @@
 #include "app/derivation/trace_lookup.h"
 
+#include "physics/engine/integrator_registry.h"
+
 
 #include <algorithm>
 #include <cmath>
@@ -138,4 +140,23 @@ bool isFiniteValue(const TraceValue& value)
         },
         value);
 }
+QString tracedIntegrator(const StepTrace& trace, int body)
+{
+    // The longest name found: an integrator built on another's code
+    // (rotation-matrix-orthonormalised on rotation-matrix) also records entries from the
+    // other's file.
+    static constexpr std::string_view folder = "physics/engine/integrators/";
+    std::string best;
+    for (const TraceEntry& e : trace.entries) {
+        if (e.body != body || e.info->stage != Stage::Integration) continue;
+        const std::string_view file = sourceFile(e);
+        const std::size_t at = file.rfind(folder);
+        if (at == std::string_view::npos || !file.ends_with(".cpp")) continue;
+        std::string name(file.substr(at + folder.size(), file.size() - at - folder.size() - 4));
+        std::replace(name.begin(), name.end(), '_', '-');
+        if (name.size() > best.size() && findIntegrator(name) != nullptr) best = name;
+    }
+    return QString::fromStdString(best);
+}
+
 } // namespace rbw

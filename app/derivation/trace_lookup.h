@@ -67,6 +67,13 @@ std::vector<int> indicesOf(const StepTrace& trace, std::string_view id, int body
 // Bodies (ascending) that have at least one entry in the trace.
 std::vector<int> bodiesInTrace(const StepTrace& trace);
 
+// The integrator that computed body b's integration in this step, by the source file
+// of its integration entries (the longest such name: one integrator may use another's code) (physics/engine/integrators/<name>.cpp, the registry's
+// name with '-' for '_'); empty if the trace does not tell (no integration entries, or
+// only shared code). The scene may have switched integrators since the step was taken
+// (issue 20): the derivation names the one that ran.
+QString tracedIntegrator(const StepTrace& trace, int body);
+
 } // namespace rbw
 
 namespace rbw {

@@ -1,6 +1,7 @@
 #include "app/gui/shell/lesson_controller.h"
 
 #include "app/core/session.h"
+#include "app/derivation/lesson_text.h"
 #include "app/exercise/exercise.h"
 #include "app/gui/shell/app_settings.h"
 #include "app/scene/scene_loader.h"
@@ -33,10 +34,20 @@ QString LessonController::windowTitleFor(const QString& title, const QString& fi
                               : tr("%1 (%2)[*] — Rigid Body Workbook").arg(title, fileName);
 }
 
+QString LessonController::lessonTextFor(const Lesson& lesson, const SceneDef& scene, SceneOrigin origin, QString markdown)
+{
+    QFile text(lesson.textPath);
+    if (markdown.isEmpty() && !lesson.textPath.isEmpty() && text.open(QIODevice::ReadOnly)) markdown = QString::fromUtf8(text.readAll());
+    const bool published = origin == SceneOrigin::Lesson || origin == SceneOrigin::File;
+    return markdown.isEmpty() ? markdown : fillLessonText(markdown, scene, published).markdown;
+}
+
 void LessonController::start(const SceneDef& scene, const Lesson& record, StartedScene info)
 {
     emit aboutToStart();
     current_ = record;
+    // The lesson text's setup numbers follow the scene (issue 20): new numbers and edits re-read and refill it.
+    info.lessonMarkdown = lessonTextFor(current_, scene, info.origin, info.lessonMarkdown);
     info.title = current_.title;
     info.windowTitle = windowTitleFor(current_.title, QFileInfo(info.userFile).fileName());
     if (info.origin == SceneOrigin::Lesson) AppSettings::setLastLesson(current_.id);

@@ -31,7 +31,7 @@ struct StartedScene {
     QString title;           // the lesson's or scene's title: window, status line, accuracy panel
     QString userFile;        // the student's own file (absolute), or empty
     QString windowTitle;
-    QString lessonMarkdown;  // the Lesson dock's new text; empty: it stays (new numbers, editor)
+    QString lessonMarkdown;  // the Lesson dock's new text, filled from the scene; empty: it stays (own file, editor)
     QString statusMessage;   // a note for the status bar, or empty
     std::optional<quint64> seed;   // new numbers: the seed they were drawn from
 };
@@ -57,6 +57,9 @@ public:
     void adoptFile(const QString& absolutePath);
 
     static QString windowTitleFor(const QString& title, const QString& fileName);
+    // The lesson's text (markdown, or its textPath if empty) with its setup filled from the scene
+    // (app/derivation/lesson_text.h); new numbers and edits are marked as not the published scene.
+    static QString lessonTextFor(const Lesson& lesson, const SceneDef& scene, SceneOrigin origin, QString markdown);
 
 signals:
     // Before the session loads the new scene: the window stops playing, clears alerts.

@@ -120,6 +120,7 @@ ShellActions::ShellActions(MainWindow* window, ExerciseActions* exercise)
     trails->setCheckable(true);
     trails->setChecked(true);
     connect(trails, &QAction::toggled, view, &SceneView::setTrailsVisible);
+    connect(view, &SceneView::trailsVisibleChanged, trails, &QAction::setChecked);   // each scene's default (issue 20)
     auto* fit = add(tr("&Fit to scene"), "actionFit", {QKeySequence(Qt::Key_F)});
     connect(fit, &QAction::triggered, view, &SceneView::fitToScene);
     auto* resetView = add(tr("Reset &view"), "actionResetView", {QKeySequence(Qt::Key_Home)});

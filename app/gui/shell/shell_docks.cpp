@@ -188,7 +188,7 @@ void fitDocksToWindow(QMainWindow* window)
         auto* trace = window->findChild<QDockWidget*>(QStringLiteral("traceDock"));
         if (lessons == nullptr || trace == nullptr) return;
         window->resizeDocks({lessons, trace},
-                            {std::max(220, window->width() * 15 / 100), std::max(560, window->width() * 45 / 100)},
+                            {std::max(270, window->width() * 19 / 100), std::max(560, window->width() * 45 / 100)},   // a readable Lesson panel (issue 20)
                             Qt::Horizontal);
     });
 }

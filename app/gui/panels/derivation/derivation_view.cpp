@@ -28,6 +28,10 @@ DerivationView::DerivationView(QWidget* parent)
     settings()->setAttribute(QWebEngineSettings::JavascriptEnabled, true);
     page()->setBackgroundColor(QColor(0xfb, 0xfa, 0xf7));
     setMinimumWidth(200);
+    // No browser menu (its Back showed step 0 at step 2, issue 20): Copy and Select all only.
+    setContextMenuPolicy(Qt::ActionsContextMenu);
+    addAction(pageAction(QWebEnginePage::Copy));
+    addAction(pageAction(QWebEnginePage::SelectAll));
 
     pollTimer_->setInterval(kPollMs);
     connect(pollTimer_, &QTimer::timeout, this, &DerivationView::poll);

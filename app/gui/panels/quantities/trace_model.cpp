@@ -7,6 +7,7 @@
 #include <QBrush>
 #include <QColor>
 #include <QFont>
+#include <QFontMetrics>
 #include <QRegularExpression>
 #include <QStringList>
 
@@ -60,39 +61,65 @@ bool sameValue(const TraceValue& a, const TraceValue& b)
         a);
 }
 
+} // namespace
+
 // A matrix as three lines with its columns aligned (in the proportional font: two
-// matrices side by side in a monospace font need 600 px at 1366x768). All entries get
-// the same decimals, `digits` significant ones for the largest entry (R: 0.9925, and
-// 0.0048 not 0.004819), as a printed matrix does; an entry that rounds to zero is "0".
-// A matrix of very large or very small entries keeps 'g' with `digits` digits.
+// matrices side by side in a monospace font need 600 px at 1366x768). The entries are
+// rounded to the same decimals, `digits` significant ones for the largest entry (R:
+// 0.9925, and 0.0048 not 0.004819), as a printed matrix does, then lose their trailing
+// zeros (1, not 1.000000; issue 20); an entry that rounds to zero is "0". Each column is
+// aligned on its decimal point. A matrix of very large or very small entries keeps 'g'
+// with `digits` digits. The tooltip has every digit (formatValue).
 QString matrixLines(const Mat3& m, int digits)
 {
     const double scale = m.cwiseAbs().maxCoeff();
     const bool fixed = scale >= 1e-4 && scale < 1e6;
     const int decimals = fixed ? std::clamp(digits - 1 - static_cast<int>(std::floor(std::log10(scale))), 0, 9) : 0;
-    QString cells[3][3];
-    int width[3] = {0, 0, 0};
+    QString whole[3][3];
+    QString fraction[3][3];   // with its '.', or empty
+    int wholeWidth[3] = {0, 0, 0};
+    int fractionWidth[3] = {0, 0, 0};
     for (int r = 0; r < 3; ++r) {
         for (int c = 0; c < 3; ++c) {
             const double x = std::abs(m(r, c)) < 1e-12 * scale ? 0.0 : m(r, c);
             QString text = fixed ? QString::number(x, 'f', decimals) : formatNumber(x, digits);
-            if (fixed && QString(text).remove('-').remove('.').count('0') == text.count(QRegularExpression("[0-9]"))) {
-                text = QStringLiteral("0");
+            if (fixed && text.contains('.')) {
+                while (text.endsWith('0')) text.chop(1);
+                if (text.endsWith('.')) text.chop(1);
             }
-            cells[r][c] = text;
-            width[c] = std::max(width[c], static_cast<int>(text.size()));
+            if (fixed && (text == QLatin1String("-0") || text.isEmpty())) text = QStringLiteral("0");
+            const qsizetype dot = fixed ? text.indexOf('.') : -1;
+            whole[r][c] = dot < 0 ? text : text.left(dot);
+            fraction[r][c] = dot < 0 ? QString() : text.mid(dot);
+            wholeWidth[c] = std::max(wholeWidth[c], static_cast<int>(whole[r][c].size()));
+            fractionWidth[c] = std::max(fractionWidth[c], static_cast<int>(fraction[r][c].size()));
         }
     }
     QStringList rows;
     for (int r = 0; r < 3; ++r) {
         QStringList row;
         // Padded with figure spaces (U+2007, a digit's width in the proportional font
-        // the cell uses), so the columns line up.
-        for (int c = 0; c < 3; ++c) row << cells[r][c].rightJustified(width[c], QChar(0x2007));
+        // the cell uses) and a punctuation space (U+2008, a point's width) for a
+        // missing point, so the points line up.
+        for (int c = 0; c < 3; ++c) {
+            QString cell = whole[r][c].rightJustified(wholeWidth[c], QChar(0x2007));
+            if (fractionWidth[c] > 0) {
+                const QString& f = fraction[r][c];
+                cell += f.isEmpty() ? QString(QChar(0x2008)) + QString(fractionWidth[c] - 1, QChar(0x2007))
+                                    : f + QString(fractionWidth[c] - f.size(), QChar(0x2007));
+            }
+            row << cell;
+        }
         rows << row.join(QChar(0x2007));
+    }
+    // Trailing padding is not needed at the line's end.
+    for (QString& line : rows) {
+        while (line.endsWith(QChar(0x2007))) line.chop(1);
     }
     return rows.join('\n');
 }
+
+namespace {
 
 bool anyImpulse(const StepTrace& trace)
 {
@@ -107,7 +134,34 @@ bool anyImpulse(const StepTrace& trace)
 QString TraceModel::cellText(const TraceValue& value) const
 {
     if (const Mat3* m = std::get_if<Mat3>(&value)) return matrixLines(*m, matrixDigits_);
-    return formatValueLines(value);
+    // Vectors and quaternions: all digits, unless the table is too narrow even for
+    // matrices of 3 digits (then vectorDigits_; the tooltip has all of them).
+    return formatValueLines(value, std::holds_alternative<double>(value) ? 7 : vectorDigits_);
+}
+
+void TraceModel::setNameWrap(int pixels, const QFont& font)
+{
+    nameWrapPx_ = std::max(0, pixels);
+    nameFont_ = font;
+}
+
+QString TraceModel::wrappedName(const QString& name) const
+{
+    if (nameWrapPx_ <= 0) return name;
+    const QFontMetrics fm(nameFont_);
+    QStringList lines;
+    QString line;
+    for (const QString& word : name.split(QLatin1Char(' '))) {
+        const QString longer = line.isEmpty() ? word : line + QLatin1Char(' ') + word;
+        if (!line.isEmpty() && fm.horizontalAdvance(longer) > nameWrapPx_) {
+            lines << line;
+            line = word;
+        } else {
+            line = longer;
+        }
+    }
+    if (!line.isEmpty()) lines << line;
+    return lines.join(QLatin1Char('\n'));
 }
 
 void TraceModel::setMatrixDigits(int digits)
@@ -379,7 +433,7 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const
     switch (role) {
     case Qt::DisplayRole:
         switch (index.column()) {
-        case QuantityColumn: return humanName(e);
+        case QuantityColumn: return wrappedName(humanName(e));
         case SymbolColumn: return QString::fromUtf8(e.info->text);
         case BeforeColumn: {
             TraceValue before;

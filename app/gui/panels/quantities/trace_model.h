@@ -21,10 +21,16 @@
 namespace rbw { class World; }
 
 #include <QAbstractItemModel>
+#include <QFont>
 
+#include <algorithm>
 #include <vector>
 
 namespace rbw {
+
+// A matrix as the cells show it: three lines, `digits` significant digits for its
+// largest entry, no trailing zeros, each column aligned on its point.
+QString matrixLines(const Mat3& m, int digits);
 
 class TraceModel : public QAbstractItemModel {
     Q_OBJECT
@@ -66,6 +72,14 @@ public:
     // Emits nothing: the same three lines, only shorter; the caller (TraceView) repaints.
     void setMatrixDigits(int digits);
     int matrixDigits() const { return matrixDigits_; }
+    // The same for vectors and quaternions (the view's last resort); numbers keep 7.
+    void setVectorDigits(int digits) { vectorDigits_ = std::clamp(digits, 4, 7); }
+    int vectorDigits() const { return vectorDigits_; }
+    // The Quantity column's names broken at spaces into lines no wider than `pixels` in
+    // `font` (the view sets it where whole names would push the values off screen);
+    // 0: one line. A name is never elided. The view lays its rows out again.
+    void setNameWrap(int pixels, const QFont& font);
+    int nameWrap() const { return nameWrapPx_; }
     // Whether this step's integration rows come before a collision impulse.
     bool integrationBeforeImpulse() const { return impulseAfterIntegration_; }
 
@@ -99,6 +113,10 @@ private:
     bool startOnly_ = false;      // setStart: the rows are a state, not a step
     bool impulseAfterIntegration_ = false;
     int matrixDigits_ = 7;
+    int vectorDigits_ = 7;
+    int nameWrapPx_ = 0;
+    QFont nameFont_;
+    QString wrappedName(const QString& name) const;
     QString cellText(const TraceValue& value) const;
 };
 

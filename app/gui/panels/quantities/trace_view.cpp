@@ -52,6 +52,7 @@ TraceView::TraceView(TraceModel* model, QWidget* parent)
     setColumnHidden(TraceModel::FormulaColumn, true);
     connect(model, &QAbstractItemModel::modelReset, this, [this] {
         expandAll();
+        spanGroupRows(QModelIndex());
         fitColumns();
     });
     connect(model, &QAbstractItemModel::dataChanged, this, &TraceView::onDataChanged);
@@ -68,6 +69,37 @@ int TraceView::cellWidth(const QModelIndex& index) const
     // QStyledItemDelegate's text margin on each side, and a pixel to spare.
     const int margin = style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, this) + 1;
     return widest + 2 * margin + 2;
+}
+
+void TraceView::spanGroupRows(const QModelIndex& parent)
+{
+    // A group's label (a stage, a body, a contact's pair, feature and point) has the
+    // whole row: it is never elided, and it does not widen the Quantity column.
+    for (int r = 0; r < model()->rowCount(parent); ++r) {
+        const QModelIndex first = model()->index(r, 0, parent);
+        const bool group = model()->rowCount(first) > 0;
+        setFirstColumnSpanned(r, parent, group);
+        if (group) spanGroupRows(first);
+    }
+}
+
+int TraceView::quantityNamesWidth() const
+{
+    // The widest quantity name with its indentation (the depth of its row, and the
+    // root's decoration).
+    int widest = headerWidth(TraceModel::QuantityColumn);
+    std::function<void(const QModelIndex&, int)> visit = [&](const QModelIndex& parent, int depth) {
+        for (int r = 0; r < model()->rowCount(parent); ++r) {
+            const QModelIndex first = model()->index(r, 0, parent);
+            if (model()->rowCount(first) > 0) {
+                visit(first, depth + 1);
+            } else {
+                widest = std::max(widest, cellWidth(first) + indentation() * (depth + 1));
+            }
+        }
+    };
+    visit(QModelIndex(), 0);
+    return widest;
 }
 
 int TraceView::widestCell(int column) const
@@ -100,17 +132,33 @@ void TraceView::fitColumns()
         return sum;
     };
     int widths[4];
-    // Two matrices side by side too wide: fewer digits in the cells (never below 3).
     model_->setMatrixDigits(7);
+    model_->setVectorDigits(7);
     int needed = valuesWidth(widths);
-    for (int digits = 6; digits >= 3 && symbol + needed + kMinQuantityWidth > available; --digits) {
+    // The Quantity column: every name whole (group labels span their row), on one line
+    // where there is room, else broken at its spaces into the room the values leave
+    // (never narrower than kMinQuantityWidth).
+    const int wrapBefore = model_->nameWrap();
+    model_->setNameWrap(0, font());
+    int quantity = std::max(kMinQuantityWidth, quantityNamesWidth());
+    const int room = available - symbol - needed;
+    if (quantity > room) {
+        const int deepest = 3 * indentation();   // stage, body, row
+        const int margins = 2 * (style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, this) + 1) + 2;
+        model_->setNameWrap(std::max(kMinQuantityWidth, room) - deepest - margins, font());
+        quantity = std::max(kMinQuantityWidth, quantityNamesWidth());
+    }
+    if (model_->nameWrap() != wrapBefore) scheduleDelayedItemsLayout();   // rows change height
+    // Two matrices side by side still too wide: fewer digits in the cells (never below 3).
+    for (int digits = 6; digits >= 3 && symbol + needed + quantity > available; --digits) {
         model_->setMatrixDigits(digits);
         needed = valuesWidth(widths);
     }
-    // The Quantity column: its names, within what is left, elided below that.
-    const int quantityNeed = std::max(headerWidth(TraceModel::QuantityColumn), widestCell(TraceModel::QuantityColumn));
-    const int left = available - symbol - needed;
-    const int quantity = std::clamp(std::min(quantityNeed, left), kMinQuantityWidth, kMaxQuantityWidth);
+    // Still too wide: vectors and quaternions in fewer digits too (never below 4).
+    for (int digits = 6; digits >= 4 && symbol + needed + quantity > available; --digits) {
+        model_->setVectorDigits(digits);
+        needed = valuesWidth(widths);
+    }
     setColumnWidth(TraceModel::QuantityColumn, quantity);
     setColumnWidth(TraceModel::SymbolColumn, symbol);
     for (int k = 0; k < 4; ++k) setColumnWidth(kValueColumns[k], widths[k]);

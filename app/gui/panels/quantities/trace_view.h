@@ -2,11 +2,10 @@
 // screen (issue 20, item 3). The columns are sized to what they hold: Before, After,
 // Frame and Unit to their widest cell, so a value is never clipped (a matrix's digits
 // are lowered, down to 3, when two matrices side by side would not fit; the tooltip
-// has all of them); Frame and Unit stay narrow; the Quantity column takes what is
-// left (at least kMinQuantityWidth, its name elided, the whole name in the tooltip),
-// the Symbol column at most kMaxSymbolWidth, and Source the rest. Every new step,
-// scrub or resize fits the columns again; a value that grows while playing widens
-// its column.
+// has all of them); Frame and Unit stay narrow; the Quantity column is as wide as its
+// widest name (never elided; a group's label spans its whole row), the Symbol column
+// at most kMaxSymbolWidth, and Source the rest. Every new step, scrub or resize fits
+// the columns again; a value that grows while playing widens its column.
 #pragma once
 
 #include <QTreeView>
@@ -19,7 +18,6 @@ class TraceView : public QTreeView {
     Q_OBJECT
 public:
     static constexpr int kMinQuantityWidth = 96;
-    static constexpr int kMaxQuantityWidth = 220;
     static constexpr int kMaxSymbolWidth = 56;
 
     explicit TraceView(TraceModel* model, QWidget* parent = nullptr);
@@ -36,6 +34,10 @@ protected:
 
 private:
     void onDataChanged(const QModelIndex& topLeft, const QModelIndex& bottomRight);
+    // Group rows (rows with children) span all columns, recursively.
+    void spanGroupRows(const QModelIndex& parent);
+    // The widest quantity name of a leaf row, with its indentation.
+    int quantityNamesWidth() const;
     // The widest cell of a column over every row (expanded or not).
     int widestCell(int column) const;
     int headerWidth(int column) const;

@@ -109,14 +109,16 @@ Bounds bodyBounds(const ViewSnapshot& snap)
 
 double referenceLength(const ViewSnapshot& snap)
 {
-    double sum = 0.0;
-    int count = 0;
+    // The smallest box's longest edge: the longest arrow of a kind is no longer than the
+    // smallest box, so no box is dwarfed by its arrows (lesson 7's 1 × 2 × 1 boxes
+    // beside the 6 m cuboids had gravity arrows longer than themselves with the mean).
+    double smallest = 0.0;
     for (const ViewSnapshot::Body& body : snap.bodies) {
         if (!body.finite) continue;
-        sum += body.size.maxCoeff();
-        ++count;
+        const double edge = body.size.maxCoeff();
+        if (smallest == 0.0 || edge < smallest) smallest = edge;
     }
-    return count > 0 ? sum / count : 1.0;
+    return smallest > 0.0 ? smallest : 1.0;
 }
 
 FrameGeometry buildFrameGeometry(const ViewSnapshot& snap, const std::vector<std::vector<Vec3>>& trails,

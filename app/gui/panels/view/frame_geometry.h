@@ -40,7 +40,7 @@ struct Bounds {
 // The world AABB of all finite bodies' corners (planes are infinite and ignored).
 Bounds bodyBounds(const ViewSnapshot& snap);
 
-// The mean of the finite bodies' longest edges; 1 m when there are none.
+// The smallest finite body's longest edge; 1 m when there are none.
 double referenceLength(const ViewSnapshot& snap);
 
 struct FrameOptions {

@@ -1,11 +1,19 @@
 #include "app/gui/panels/view/scene_view.h"
 
+#include "app/output/atomic_file.h"
+#include "physics/engine/integrator_registry.h"
+
 #include "app/gui/style/number_text.h"
 
 #include "app/gui/panels/view/ray_pick.h"
 #include "app/gui/panels/view/view_style.h"
 
 #include <QAction>
+#include <QBuffer>
+#include <QFileDialog>
+#include <QMenu>
+#include <QMessageBox>
+#include <QStandardPaths>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -64,7 +72,39 @@ void SceneView::createViewActions()
     names->setCheckable(true);
     connect(names, &QAction::toggled, this, &SceneView::setBodyNamesVisible);
     viewActions_.push_back(names);
+    auto* save = new QAction(tr("Save the view as &PNG…"), this);
+    save->setObjectName("actionSaveViewPng");
+    save->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_P));
+    connect(save, &QAction::triggered, this, &SceneView::saveImageAsked);
+    viewActions_.push_back(save);
     addActions(viewActions_);
+}
+
+bool SceneView::saveImage(const QString& path, QString* error)
+{
+    const QImage image = grabFramebuffer();   // the view as the student sees it, overlays included
+    if (image.isNull()) {
+        if (error != nullptr) *error = tr("%1: cannot write: the view has no picture yet").arg(path);
+        return false;
+    }
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    if (!image.save(&buffer, "PNG")) {
+        if (error != nullptr) *error = tr("%1: cannot write: the picture cannot be encoded as PNG").arg(path);
+        return false;
+    }
+    return writeFileAtomically(path, bytes, error);
+}
+
+void SceneView::saveImageAsked()
+{
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save the view as PNG"), folder + QStringLiteral("/view.png"),
+                                                      tr("PNG images (*.png)"));
+    if (path.isEmpty()) return;
+    QString error;
+    if (!saveImage(path, &error)) QMessageBox::warning(this, tr("Save the view as PNG"), error);
 }
 
 QAction* SceneView::viewActionFor(const QKeyEvent* event) const
@@ -220,11 +260,18 @@ void SceneView::follow()
 
 QString SceneView::infoText() const
 {
-    QString text = tr("step %1 · t = %2 s · h = %3 s · %4")
-                       .arg(snapshot_.nextStep)
+    // Steps are counted from k = 0 everywhere (docs/user-guide.md): the line names the
+    // step just taken, as the derivation and Check my numbers do.
+    const QString step = snapshot_.nextStep > 0 ? tr("after step k = %1").arg(snapshot_.nextStep - 1)
+                                                : tr("before step k = 0");
+    const IntegratorInfo* integrator = findIntegrator(snapshot_.integrator);
+    const QString method = integrator != nullptr && *integrator->title != '\0' ? QString::fromUtf8(integrator->title)
+                                                                               : QString::fromStdString(snapshot_.integrator);
+    QString text = tr("%1 · t = %2 s · h = %3 s · %4")
+                       .arg(step)
                        .arg(shortNumber(snapshot_.time))
                        .arg(shortNumber(snapshot_.h))   // as the h box shows it
-                       .arg(QString::fromStdString(snapshot_.integrator));
+                       .arg(method);
     if (snapshot_.energyFinite) text += tr(" · E = %1 J").arg(snapshot_.energy, 0, 'g', 7);
     if (followBody_ >= 0 && followBody_ < static_cast<int>(snapshot_.bodies.size())) {
         text += tr(" · following %1").arg(QString::fromStdString(snapshot_.bodies[static_cast<size_t>(followBody_)].name));
@@ -274,6 +321,9 @@ void SceneView::setSnapshot(const ViewSnapshot& snapshot)
         sceneBox_ = view::Bounds{};
         clearTrails();
         resetView();
+        // Trails where they help: off for more than kMaxTrailedBodies (lesson 4's pen of
+        // six tumbling boxes and its fifty, where they tangle into a knot).
+        setTrailsVisible(static_cast<int>(snapshot_.bodies.size()) <= kMaxTrailedBodies);
     } else if (wentBack) {
         clearTrails();
     }
@@ -311,7 +361,9 @@ void SceneView::clearTrails()
 
 void SceneView::setTrailsVisible(bool visible)
 {
+    const bool changed = visible != trailsVisible_;
     trailsVisible_ = visible;
+    if (changed) emit trailsVisibleChanged(visible);
     update();
 }
 
@@ -428,6 +480,7 @@ void SceneView::mousePressEvent(QMouseEvent* event)
     } else if (event->button() == Qt::RightButton || event->button() == Qt::MiddleButton) {
         drag_ = DragMode::Pan;
     }
+    pressPos_ = event->position();
     event->accept();
 }
 
@@ -470,6 +523,12 @@ void SceneView::mouseReleaseEvent(QMouseEvent* event)
         update();
     }
     drag_ = DragMode::None;
+    // A right click that did not pan: the view's menu (views, names, Save as PNG).
+    if (event->button() == Qt::RightButton && (event->position() - pressPos_).manhattanLength() < 4) {
+        QMenu menu(this);
+        menu.addActions(viewActions_);
+        menu.exec(event->globalPosition().toPoint());
+    }
     event->accept();
 }
 

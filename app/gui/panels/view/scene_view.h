@@ -16,7 +16,9 @@
 #include "app/gui/panels/view/scene_renderer.h"
 #include "app/gui/panels/view/view_snapshot.h"
 
+#include <QFontMetrics>
 #include <QList>
+#include <QStringList>
 #include <QOpenGLWidget>
 #include <QPointF>
 #include <QString>
@@ -53,6 +55,9 @@ public:
     void setSpring(std::optional<std::pair<Vec3, Vec3>> fromTo_W);
 
     void clearTrails();
+    // Trails are shown by default in a scene of at most kMaxTrailedBodies bodies; each
+    // new scene sets that default again (trailsVisibleChanged tells the View menu).
+    static constexpr int kMaxTrailedBodies = 5;
     void setTrailsVisible(bool visible);
     bool trailsVisible() const { return trailsVisible_; }
     const std::vector<std::vector<Vec3>>& trails() const { return trails_; }
@@ -87,6 +92,12 @@ public:
     // Where a world point appears; a point behind the camera maps to (-1, -1).
     QPointF projectToWidget(const Vec3& p_W) const;
 
+    // The view as it is on screen (3D, overlays, legend) as a PNG file, through the
+    // atomic writer; false and *error ("PATH: cannot write: REASON") if not written.
+    // The action "Save the view as PNG…" (View menu, the view's right-click menu) asks
+    // for the file.
+    bool saveImage(const QString& path, QString* error = nullptr);
+
     // For fps measurements and diagnostics.
     int framesRendered() const { return framesRendered_; }
     QString glVersionString() const { return glVersion_; }
@@ -113,13 +124,18 @@ public:
     void setFollowBody(int body);
     int followBody() const { return followBody_; }
 
-    // The info overlay (top left): step, t, h, the integrator and the energy E.
+    // The info overlay (top left): the step just taken (k counted from 0), t, h, the
+    // integrator's name and the energy E, as one line.
     QString infoText() const;
+    // That line as the overlay draws it: broken at its " · " into lines no wider than
+    // maxWidth (a single part wider than that keeps its own line).
+    static QStringList infoLines(const QString& text, const QFontMetrics& fm, int maxWidth);
 
     QSize sizeHint() const override { return {640, 480}; }
     QSize minimumSizeHint() const override { return {160, 120}; }
 
 signals:
+    void trailsVisibleChanged(bool visible);
     void grabStarted(int body, QVector3D hit_W);
     void grabMoved(QVector3D target_W);   // on the plane through the hit point, facing the camera
     void grabEnded();
@@ -143,6 +159,7 @@ private:
     void paintInfo(QPainter& painter) const;
     void paintLabels(QPainter& painter) const;
     void createViewActions();
+    void saveImageAsked();
     QAction* viewActionFor(const QKeyEvent* event) const;
     void setHoveredBody(int body);
     view::FrameOptions frameOptions() const;
@@ -175,6 +192,7 @@ private:
     bool bodyNamesVisible_ = false;
     int hoveredBody_ = -1;
     QPointF hoverPos_;
+    QPointF pressPos_;   // where the last button went down (a right click without a pan opens the menu)
     view::WorldReference world_;
     std::vector<view::SceneLabel> labels_;
     bool glReady_ = false;

@@ -8,6 +8,8 @@
 #include <QPainter>
 #include <QPainterPath>
 
+#include <algorithm>
+
 namespace rbw {
 
 namespace {
@@ -63,6 +65,24 @@ void SceneView::paintLabels(QPainter& painter) const
     }
 }
 
+QStringList SceneView::infoLines(const QString& text, const QFontMetrics& fm, int maxWidth)
+{
+    const QString separator = QStringLiteral(" · ");
+    QStringList lines;
+    QString line;
+    for (const QString& part : text.split(separator)) {
+        const QString longer = line.isEmpty() ? part : line + separator + part;
+        if (!line.isEmpty() && fm.horizontalAdvance(longer) > maxWidth) {
+            lines << line;
+            line = part;
+        } else {
+            line = longer;
+        }
+    }
+    if (!line.isEmpty()) lines << line;
+    return lines;
+}
+
 void SceneView::paintInfo(QPainter& painter) const
 {
     if (!hasSnapshot_) return;
@@ -70,13 +90,17 @@ void SceneView::paintInfo(QPainter& painter) const
     font.setPointSizeF(9.0);
     painter.setFont(font);
     const QFontMetrics fm(font);
-    const QString text = infoText();
-    const QRect box(8, 8, fm.horizontalAdvance(text) + 16, fm.height() + 10);
+    // Wrapped at its " · " where the view is narrower than the line (lesson 11 at
+    // 1366x768 cut "E = 65.4199…" off): never clipped.
+    const QStringList lines = infoLines(infoText(), fm, width() - 32);
+    int widest = 0;
+    for (const QString& line : lines) widest = std::max(widest, fm.horizontalAdvance(line));
+    const QRect box(8, 8, widest + 16, fm.height() * static_cast<int>(lines.size()) + 10);
     painter.setPen(QColor(0, 0, 0, 40));
     painter.setBrush(QColor(255, 255, 255, 215));
     painter.drawRoundedRect(box, 6, 6);
     painter.setPen(QColor(30, 30, 35));
-    painter.drawText(box, Qt::AlignCenter, text);
+    painter.drawText(box.adjusted(8, 5, -8, -5), Qt::AlignLeft | Qt::AlignVCenter, lines.join('\n'));
 }
 
 void SceneView::paintGlError(QPainter& painter) const

@@ -50,7 +50,7 @@ inline constexpr float kPlaneAlphaBehind = 0.10f;            // a wall seen from
 inline constexpr double kNegligibleMagnitude = 1e-10;
 
 // Display scale of one kind of arrow: the longest arrow of the kind is drawn
-// refLength long (about one box), so lengths compare within a kind, never across
+// refLength long (the smallest box's longest edge), so lengths compare within a kind, never across
 // kinds. 0 when there is nothing to draw.
 inline double arrowScale(double maxMagnitude, double refLength)
 {

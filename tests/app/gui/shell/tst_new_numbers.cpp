@@ -16,6 +16,7 @@
 #include <QJsonObject>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTextBrowser>
 #include <QtTest>
 
 using namespace rbw;
@@ -90,6 +91,38 @@ private slots:
             exportAction->trigger();
             QCOMPARE(offered, QString::number(seed));
         }
+    }
+
+    // The Lesson panel follows the scene (issue 20): after New numbers the setup shows
+    // the new mass and force beside the published ones, with the note that the worked
+    // values are for the published numbers; reopening the lesson shows it as published.
+    void lessonTextFollowsTheScene()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openLesson("01-one-step"));
+        auto* text = w.findChild<QTextBrowser*>("lessonText");
+        QVERIFY(text != nullptr);
+        QVERIFY(text->toPlainText().contains("mass M = 2"));
+        QVERIFY(!text->toPlainText().contains("published"));
+        QString error;
+        QVERIFY2(w.openNewNumbers(42, &error), qPrintable(error));
+        const SceneDef& scene = w.session()->baseScene();
+        QVERIFY(scene.bodies[0].mass != 2.0 || scene.forces[0].f_W != Vec3(1.0, 1.0, 0.0));
+        const QString shown = text->toPlainText();
+        QVERIFY2(shown.contains("for the published numbers"), qPrintable(shown.left(400)));
+        auto number = [](double x) { return QString::number(x, 'g', 6).replace('-', QChar(0x2212)); };
+        const QString mass = scene.bodies[0].mass == 2.0 ? QStringLiteral("mass M = 2")
+                                                         : QStringLiteral("mass M = %1 (published: 2)").arg(number(scene.bodies[0].mass));
+        QVERIFY2(shown.contains(mass), qPrintable(shown.left(900)));
+        const Vec3& f = scene.forces[0].f_W;
+        if (f != Vec3(1.0, 1.0, 0.0)) {
+            const QString force = QStringLiteral("f = (%1, %2, %3) (published: (1, 1, 0))").arg(number(f.x()), number(f.y()), number(f.z()));
+            QVERIFY2(shown.contains(force), qPrintable(shown.left(900)));
+        }
+        QVERIFY(w.openLesson("01-one-step"));
+        QVERIFY(!text->toPlainText().contains("published"));
     }
 
     // Negative control: lesson 2 has no exercise.json; the scene stays.

@@ -12,6 +12,8 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QtTest>
+
+#include <functional>
 #include "app/gui/panels/quantities/code_view.h"
 #include "app/gui/panels/quantities/formula_pane.h"
 #include "app/scene/scene_loader.h"
@@ -246,9 +248,9 @@ void TestQuantitiesTable::contactsGroupedByPair()
 // Lesson 11 (manifold model) names each point's group with its pair, feature and
 // point ("contact 7 · stack-1 ↔ stack-2 · face-face (reference A) · point 3 of 4"),
 // far wider than a quantity's name. Sized to its contents, the Quantity column pushed
-// Before and After off the table at the default window size. The column is capped at
-// a third of the table (the full name is the group's tooltip), so the After column
-// starts on screen.
+// Before and After off the table at the default window size. A group's label now
+// spans its row (its full text also in the tooltip), so the After column starts on
+// screen.
 void TestQuantitiesTable::valuesStayOnScreenWithLongGroupNames()
 {
     MainWindow w;
@@ -264,11 +266,23 @@ void TestQuantitiesTable::valuesStayOnScreenWithLongGroupNames()
     // At least 40 px of the After column (its first digits) are on screen.
     const int after = view->columnViewportPosition(TraceModel::ValueColumn);
     QVERIFY2(after + 40 <= width, qPrintable(QStringLiteral("After starts at %1 of %2").arg(after).arg(width)));
-    // The control: sized to its contents, the Quantity column pushes After off screen.
+    // The control: with the group labels in the Quantity column (not spanning their
+    // rows) and the column sized to its contents, After is pushed off screen.
     const int capped = view->columnWidth(TraceModel::QuantityColumn);
+    std::function<void(const QModelIndex&, bool)> span = [&](const QModelIndex& parent, bool on) {
+        for (int r = 0; r < view->model()->rowCount(parent); ++r) {
+            const QModelIndex i = view->model()->index(r, 0, parent);
+            if (view->model()->rowCount(i) == 0) continue;
+            QVERIFY(view->isFirstColumnSpanned(r, parent) == !on);   // spanned as the table shows it
+            view->setFirstColumnSpanned(r, parent, on);
+            span(i, on);
+        }
+    };
+    span(QModelIndex(), false);
     view->resizeColumnToContents(TraceModel::QuantityColumn);
     QVERIFY2(view->columnViewportPosition(TraceModel::ValueColumn) + 40 > width,
              qPrintable(QStringLiteral("natural width %1 px").arg(view->columnWidth(TraceModel::QuantityColumn))));
+    span(QModelIndex(), true);
     view->setColumnWidth(TraceModel::QuantityColumn, capped);
     // A group's whole label is its tooltip, for where it is elided.
     const QModelIndex collisions = [&] {

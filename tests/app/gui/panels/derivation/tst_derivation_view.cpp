@@ -58,6 +58,7 @@ private slots:
     void lesson3CollisionStep();
     void exportHtml();
     void exportPdf();
+    void noBrowserMenu();
 
 private:
     // Shows a page and waits for rendered(); returns its arguments.
@@ -193,6 +194,21 @@ void TestDerivationView::exportPdf()
     QVERIFY(f.open(QIODevice::ReadOnly));
     QVERIFY(f.size() > 1000);
     QCOMPARE(f.read(5), QByteArray("%PDF-"));
+}
+
+// The right-click menu is Copy and Select all, never the browser's Back, Forward or
+// Reload (Back showed an earlier step's page, issue 20).
+void TestDerivationView::noBrowserMenu()
+{
+    DerivationView view;
+    QCOMPARE(view.contextMenuPolicy(), Qt::ActionsContextMenu);
+    const QList<QAction*> actions = view.actions();
+    QCOMPARE(actions.size(), 2);
+    QVERIFY(actions.contains(view.pageAction(QWebEnginePage::Copy)));
+    QVERIFY(actions.contains(view.pageAction(QWebEnginePage::SelectAll)));
+    for (const QWebEnginePage::WebAction a : {QWebEnginePage::Back, QWebEnginePage::Forward, QWebEnginePage::Reload}) {
+        QVERIFY(!actions.contains(view.pageAction(a)));
+    }
 }
 
 int main(int argc, char** argv)

@@ -15,6 +15,9 @@
 #include <QOpenGLContext>
 #include <QSignalSpy>
 #include <QWheelEvent>
+#include <QTemporaryDir>
+#include <QAction>
+#include <QFile>
 #include <QtTest>
 
 #include <cmath>
@@ -115,6 +118,8 @@ private slots:
     void manyBoxesFrameRate();
     void cameraFollowsABody();
     void infoOverlayAndStateArrows();
+    void infoWrapsInANarrowView();
+    void viewSavesAsPng();
 };
 
 void TestSceneView::contextIs33Core()
@@ -367,6 +372,18 @@ void TestSceneView::trailsFollowAndReset()
     for (int b = 0; b < 3; ++b) QCOMPARE(int(view.trails()[b].size()), 1);
     view.clearTrails();
     for (int b = 0; b < 3; ++b) QVERIFY(view.trails()[b].empty());
+    // Three bodies: trails shown. Lesson 4's six tumbling boxes: off by default, and the
+    // View menu is told; the next small scene turns them on again.
+    QVERIFY(view.trailsVisible());
+    QSignalSpy changed(&view, &SceneView::trailsVisibleChanged);
+    World pen(lessonScene("04-many-boxes/scene.json"));
+    view.setSnapshot(makeViewSnapshot(pen, nullptr));
+    QVERIFY(!view.trailsVisible());
+    QCOMPARE(changed.size(), 1);
+    QCOMPARE(changed.at(0).at(0).toBool(), false);
+    view.setSnapshot(makeViewSnapshot(fresh, nullptr));
+    QVERIFY(view.trailsVisible());
+    QCOMPARE(changed.size(), 2);
 }
 
 void TestSceneView::springIsDrawn()
@@ -452,7 +469,7 @@ void TestSceneView::cameraFollowsABody()
     QCOMPARE(view.followBody(), -1);
 }
 
-// The info line names the step Step takes next, t, h, the integrator and E (the
+// The info line names the step just taken, t, h, the integrator and E (the
 // trace's diagnostics), and the v/ω/L arrows appear only when switched on, drawn
 // from the world's state.
 void TestSceneView::infoOverlayAndStateArrows()
@@ -462,8 +479,10 @@ void TestSceneView::infoOverlayAndStateArrows()
     showView(view);
     view.setSnapshot(s.snapshot());
     const QString info = view.infoText();
-    QVERIFY2(info.contains("step 10") && info.contains("h = 0.01 s") &&
-                 info.contains(QString::fromStdString(s.world->scene().integrator)),
+    // Ten steps taken: the last was k = 9 (steps count from 0, as in the derivation);
+    // the integrator by its name, not its id.
+    QVERIFY2(info.startsWith("after step k = 9 · t = 0.1 s") && info.contains("h = 0.01 s") &&
+                 info.contains("explicit Euler") && !info.contains("explicit-euler"),
              qPrintable(info));
     QVERIFY2(info.contains(QStringLiteral("E = %1 J").arg(s.trace.diagnostics.total, 0, 'g', 7)), qPrintable(info));
     auto count = [&view](view::ArrowKind kind) {
@@ -482,6 +501,55 @@ void TestSceneView::infoOverlayAndStateArrows()
     QVERIFY(distinctColours(img) > 300);
 }
 
+
+// Lesson 11 in a view 360 px wide (its line "… · E = 65.4199… J" was cut off at
+// 1366x768): the overlay's lines each fit the view and together hold the whole line.
+void TestSceneView::infoWrapsInANarrowView()
+{
+    Stepped s = stepLesson("11-resting-contact", 3);
+    SceneView view;
+    showView(view, {360, 300});
+    view.setSnapshot(s.snapshot());
+    QFont font = view.font();
+    font.setPointSizeF(9.0);   // the overlay's font (paintInfo)
+    const QFontMetrics fm(font);
+    const QString info = view.infoText();
+    QVERIFY(fm.horizontalAdvance(info) > 360 - 32);   // one line would not fit: the case at hand
+    const QStringList lines = SceneView::infoLines(info, fm, 360 - 32);
+    QVERIFY(lines.size() >= 2);
+    for (const QString& line : lines) QVERIFY2(fm.horizontalAdvance(line) <= 360 - 32, qPrintable(line));
+    QCOMPARE(lines.join(QStringLiteral(" · ")), info);
+    QVERIFY(lines.last().contains(QStringLiteral("E = ")) || lines.join(' ').contains(QStringLiteral("E = ")));
+    // Wide enough: one line.
+    QCOMPARE(SceneView::infoLines(info, fm, fm.horizontalAdvance(info)).size(), 1);
+}
+
+// The view as a PNG through the atomic writer: the file is the picture on screen; a
+// folder that does not exist is refused with the path in the message, nothing written.
+void TestSceneView::viewSavesAsPng()
+{
+    Stepped s = stepLesson("05-spinning", 10);
+    SceneView view;
+    showView(view);
+    view.setSnapshot(s.snapshot());
+    QTemporaryDir dir;
+    const QString path = dir.filePath("view.png");
+    QString error;
+    QVERIFY2(view.saveImage(path, &error), qPrintable(error));
+    QImage saved;
+    QVERIFY(saved.load(path, "PNG"));
+    const QImage shown = view.grabFramebuffer();
+    QCOMPARE(saved.size(), shown.size());
+    QVERIFY(distinctColours(saved) > 300);
+    const QString bad = dir.filePath("no/such/folder/view.png");
+    QVERIFY(!view.saveImage(bad, &error));
+    QVERIFY2(error.contains(bad), qPrintable(error));
+    QVERIFY(!QFile::exists(bad));
+    // The action is in the view's menu (and so the View menu).
+    bool listed = false;
+    for (QAction* a : view.viewActions()) listed = listed || a->objectName() == QLatin1String("actionSaveViewPng");
+    QVERIFY(listed);
+}
 
 QTEST_MAIN(TestSceneView)
 #include "tst_scene_view.moc"

@@ -62,6 +62,7 @@ private slots:
     void cameraRayRoundTrip();
     void arrowScaleLongestIsOneBox();
     void lesson5TorqueIsDrawnAtTheCentre();
+    void lesson7BoxesOutgrowTheirGravity();
 };
 
 void TestViewGeometry::lesson1ForceArrowIsTheTracesForce()
@@ -559,6 +560,27 @@ void TestViewGeometry::lesson5TorqueIsDrawnAtTheCentre()
     // Negative control: before the first step there is no trace and no torque arrow.
     const ViewSnapshot before = makeViewSnapshot(World(lessonScene("05-spinning/scene.json")), nullptr);
     QVERIFY(before.torques.empty());
+}
+
+// Lesson 7: boxes 1 × 2 × 1 (1 kg) beside cuboids 2 × 6 × 2 (2 kg). The longest
+// gravity arrow (2 kg · 9.81) is the smallest box's longest edge, 2 m, so every box is
+// at least as long as its own gravity arrow (with the mean edge, 4.4 m, the 1 kg boxes
+// got 2.2 m arrows).
+void TestViewGeometry::lesson7BoxesOutgrowTheirGravity()
+{
+    World w(lessonScene("07-bounce/scene.json"));
+    StepTrace t;
+    QVERIFY(w.step(&t).ok);
+    const view::FrameGeometry g = view::buildFrameGeometry(makeViewSnapshot(w, &t), {}, view::FrameOptions{});
+    QCOMPARE(g.scales.refLength, 2.0);
+    int gravity = 0;
+    for (const view::ArrowRecord& a : g.arrows) {
+        if (a.kind != view::ArrowKind::Gravity) continue;
+        ++gravity;
+        const double edge = w.scene().bodies[static_cast<std::size_t>(a.body)].size.maxCoeff();
+        QVERIFY2((a.to_W - a.from_W).norm() <= edge * (1.0 + 1e-12), qPrintable(QString::number(a.body)));
+    }
+    QCOMPARE(gravity, 5);
 }
 
 QTEST_GUILESS_MAIN(TestViewGeometry)
