@@ -83,6 +83,16 @@ std::string wrongText(const AnswerResult& r, const World& w, const Answer& a)
         return s;
     }
     if (!r.mistakes.empty()) return explanationOf(r.mistakes.front(), w, a);
+    // One pair, only possible: each id "only together with" the other, then why (diagnosis.cpp).
+    if (r.possibleMistakes.size() == 2) {
+        const PossibleMistake& p = r.possibleMistakes[0];
+        const std::string head = std::string("only together with ") + r.possibleMistakes[1].id + "; ";
+        if (p.reason.rfind(head, 0) == 0 && p.reason.find("several mistakes") == std::string::npos) {
+            return std::string("It may be two mistakes together, ") + p.id + " and " + r.possibleMistakes[1].id +
+                   ", but " + p.reason.substr(head.size()) + ": " + explanationOf(p.id, w, a) + " " +
+                   explanationOf(r.possibleMistakes[1].id, w, a);
+        }
+    }
     if (r.possibleMistakes.size() > 1) {
         std::vector<std::string> ids;
         for (const PossibleMistake& p : r.possibleMistakes) ids.push_back(p.id);
