@@ -35,6 +35,9 @@ QString humanName(const TraceEntry& e)
     return name;
 }
 
+// The stages of the trace (trace.h's Stage, in its order).
+constexpr int kStageCount = static_cast<int>(Stage::Probes) + 1;
+
 QString stageTitle(Stage s)
 {
     switch (s) {
@@ -309,6 +312,23 @@ void TraceModel::rebuild(const SceneDef& scene)
         }
         return stageTitle(stage);
     };
+    // The entries bucketed once, in trace order: by contact for the collision stage, by
+    // stage and body for the others (a pile's step has tens of thousands of entries and
+    // hundreds of contacts and bodies; a scan per contact and per body froze the app).
+    const int bodies = static_cast<int>(scene.bodies.size());
+    std::vector<std::vector<int>> ofContact(trace_.contacts.size());
+    std::vector<std::vector<int>> ofStageBody(static_cast<size_t>(kStageCount) * static_cast<size_t>(bodies + 1));
+    auto stageBody = [&](Stage stage, int body) -> std::vector<int>& {
+        return ofStageBody[static_cast<size_t>(stage) * static_cast<size_t>(bodies + 1) + static_cast<size_t>(body + 1)];
+    };
+    for (size_t i = 0; i < trace_.entries.size(); ++i) {
+        const TraceEntry& e = trace_.entries[i];
+        if (e.info->stage == Stage::Collision) {
+            if (e.index >= 0 && e.index < static_cast<int>(ofContact.size())) ofContact[e.index].push_back(static_cast<int>(i));
+        } else if (e.body >= -1 && e.body < bodies) {
+            stageBody(e.info->stage, e.body).push_back(static_cast<int>(i));
+        }
+    }
     for (Stage stage : order) {
         int stageNode = -1;
         if (stage == Stage::Collision) {
@@ -343,26 +363,19 @@ void TraceModel::rebuild(const SceneDef& scene)
                 if (c.pointCount > 1) label += tr(" · average of %1 corners").arg(c.pointCount);
                 if (c.separating) label += tr(" · separating: no impulse");
                 const int contactNode = addChild(pairNode >= 0 ? pairNode : stageNode, label, -1);
-                for (size_t i = 0; i < trace_.entries.size(); ++i) {
-                    const TraceEntry& e = trace_.entries[i];
-                    if (e.info->stage == Stage::Collision && e.index == k) {
-                        rowOfEntry_[i] = addChild(contactNode, QString(), static_cast<int>(i));
-                    }
-                }
+                for (const int i : ofContact[static_cast<size_t>(k)]) rowOfEntry_[i] = addChild(contactNode, QString(), i);
             }
             continue;
         }
-        for (int body = -1; body < static_cast<int>(scene.bodies.size()); ++body) {
+        for (int body = -1; body < bodies; ++body) {
             int bodyNode = -1;
-            for (size_t i = 0; i < trace_.entries.size(); ++i) {
-                const TraceEntry& e = trace_.entries[i];
-                if (e.info->stage != stage || e.body != body) continue;
+            for (const int i : stageBody(stage, body)) {
                 if (stageNode < 0) stageNode = addChild(0, title(stage), -1);
                 if (bodyNode < 0) {
                     bodyNode = body < 0 ? stageNode
                                         : addChild(stageNode, QString::fromStdString(scene.bodies[body].name), -1);
                 }
-                rowOfEntry_[i] = addChild(bodyNode, QString(), static_cast<int>(i));
+                rowOfEntry_[i] = addChild(bodyNode, QString(), i);
             }
         }
     }
