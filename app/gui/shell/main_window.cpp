@@ -23,6 +23,7 @@
 #include "app/gui/shell/scene_file_flows.h"
 #include "app/gui/shell/scene_files.h"
 #include "app/gui/shell/shell_actions.h"
+#include "physics/engine/integrator_registry.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -457,13 +458,17 @@ void MainWindow::updateStatus()
         statusLabel_->setText(tr("No lesson loaded"));
         return;
     }
-    QString text = tr("%1 · step %2 · t = %3 s · h = %4 s · %5 · %6 steps back")
-                       .arg(currentSceneTitle())
-                       .arg(world->stepIndex())
+    // Steps taken (the view's "after step k" counts from 0), the integrator by its name.
+    const IntegratorInfo* method = findIntegrator(world->integrator().name());
+    const auto count = [this](long long n, const char* one, const char* many) { return n == 1 ? tr(one) : tr(many).arg(n); };
+    QString text = tr("%1 · %2 · t = %3 s · h = %4 s · %5 · %6")
+                       .arg(currentSceneTitle(), count(world->stepIndex(), "1 step taken", "%1 steps taken"))
                        .arg(world->time(), 0, 'g', 6)
                        .arg(world->scene().dt, 0, 'g', 6)
-                       .arg(QString::fromLatin1(world->integrator().name()))
-                       .arg(session_.history().stepsBackAvailable());
+                       .arg(method != nullptr && *method->title != '\0' ? QString::fromUtf8(method->title)
+                                                                         : QString::fromLatin1(world->integrator().name()),
+                            count(static_cast<long long>(session_.history().stepsBackAvailable()), "1 step back",
+                                  "%1 steps back"));
     if (world->hasSwitchableTorque()) text += session_.torquesOn() ? tr(" · torque on (K)") : tr(" · torque off (K)");
     if (world->stepIndex() == 0) text += tr("  —  press Step (S) to take the first step");
     statusLabel_->setText(text);

@@ -43,6 +43,7 @@ private slots:
     void oneColourPerBody();
     void accuracyPanelFitsItsDock();
     void playStopsAtTheScenesEnd();
+    void statusBarCountsInWords();
     void hBoxShowsAShortNumberAndEscapeDiscards();
 };
 
@@ -293,6 +294,25 @@ void TestWindowControls::accuracyPanelFitsItsDock()
 }
 
 RBW_WINDOW_TEST_MAIN(TestWindowControls)
+
+// Issue 20, item 7: the status bar names the integrator (not its id) and counts with
+// plurals: lesson 1 after one step is "1 step taken" and "1 step back", after two
+// "2 steps taken" and "2 steps back" (the history keeps every step of a small scene).
+void TestWindowControls::statusBarCountsInWords()
+{
+    MainWindow w;
+    QVERIFY(w.openLesson("01-one-step"));
+    auto* status = w.findChild<QLabel*>("statusLabel");
+    QVERIFY(status != nullptr);
+    w.stepOnce();
+    QString text = status->text();
+    QVERIFY2(text.contains(" · 1 step taken · ") && text.contains(" · 1 step back"), qPrintable(text));
+    QVERIFY2(text.contains(" · explicit Euler · "), qPrintable(text));
+    QVERIFY2(!text.contains("explicit-euler"), qPrintable(text));
+    w.stepOnce();
+    text = status->text();
+    QVERIFY2(text.contains(" · 2 steps taken · ") && text.contains(" · 2 steps back"), qPrintable(text));
+}
 
 void TestWindowControls::playStopsAtTheScenesEnd()
 {
