@@ -13,59 +13,6 @@ namespace rbw::probes {
 
 namespace {
 
-// One body as the student's simulator stores it.
-struct SimBody {
-    double mass = 1.0;
-    Vec3 size = Vec3::Ones();
-    Vec3 x_W = Vec3::Zero(), v_W = Vec3::Zero();
-    Quat r_WB = Quat::Identity();
-    Vec3 L_W = Vec3::Zero();
-    Vec3 omega_W = Vec3::Zero();
-    Mat3 Iinv_W = Mat3::Zero();                   // the stored world inverse inertia
-    Mat3 I0inv_B = Mat3::Zero();                  // I0^-1 (impulse-body-inverse-inertia uses it)
-    std::vector<std::pair<Vec3, Vec3>> forces;    // (p, f) for the next step
-    bool stepped = false;
-    // What a simulator keeps between steps (simulator_state.h): the several-step models
-    // (forces-not-cleared, inertia-not-updated, ...) act here as in replay().
-    SimulatorState kept;
-};
-
-// The inverse inertia the simulator stores after a step: the one its omega = Iinv_W L
-// uses (body-inverse-inertia: I0^-1; inertia-not-inverted: R I0 R^T).
-Mat3 storedInverseInertia(const HandEulerStep& s, Mistake m)
-{
-    if (m == Mistake::BodyInverseInertia) return s.I0inv_B;
-    if (m == Mistake::InertiaNotInverted) return s.R_WB * s.I0_B * s.R_WB.transpose();
-    return s.Iinv_W;
-}
-
-void stepBody(SimBody& b, double h, Mistake m, int variant)
-{
-    BodyStepInputs in;
-    in.h = h;
-    in.mass = b.mass;
-    in.size = b.size;
-    in.x_W = b.x_W;
-    in.v_W = b.v_W;
-    in.q_WB = b.r_WB;
-    in.L_W = b.L_W;
-    in.forces = b.forces;
-    in.firstStep = !b.stepped;
-    in.omega_W = b.omega_W;   // the simulator's own omega_n
-    enterState(b.kept, in);
-    const HandEulerStep s = handEulerStep(in, m, variant);
-    b.x_W = s.x_W;
-    b.v_W = s.v_W;
-    b.r_WB = s.q_WB;
-    b.L_W = s.L_W;
-    b.omega_W = s.omega_W;
-    b.Iinv_W = storedInverseInertia(s, m);
-    b.I0inv_B = s.I0inv_B;
-    keepState(s, b.kept);
-    b.forces.clear();
-    b.stepped = true;
-}
-
 // The impulse between A = bodies[i] and B = bodies[j], if they touch.
 void collide(SimBody& A, SimBody& B, double c, Mistake m)
 {
@@ -117,21 +64,15 @@ Answers replayWithContacts(const Probe& probe, const ReplayModel& model, double 
 {
     const bool inStep = scopeOf(model.mistake) == ProbeScope::Motion;
     const Mistake stepMistake = inStep ? model.mistake : Mistake::None;
+    const ReplayModel stepModel{stepMistake, model.variant};
     const Mistake impulseMistake = scopeOf(model.mistake) == ProbeScope::Collision ? model.mistake : Mistake::None;
     std::vector<SimBody> bodies;
     Answers answers;
     for (const Command& cmd : probe.commands) {
         switch (cmd.kind) {
-        case CommandKind::AddBody: {
-            SimBody b;
-            b.x_W = cmd.a;
-            b.size = cmd.b;
-            b.mass = cmd.mass;
-            b.kept = newBodyState(b.size, b.mass, ReplayModel{stepMistake, model.variant});
-            b.r_WB = b.kept.r0_WB;
-            bodies.push_back(b);
+        case CommandKind::AddBody:
+            bodies.push_back(addSimBody(cmd.a, cmd.b, cmd.mass, stepModel));
             break;
-        }
         case CommandKind::SetOrientation:
             bodies[cmd.body].r_WB = cmd.q.normalized();
             bodies[cmd.body].kept.orientationSet = true;
@@ -143,7 +84,7 @@ Answers replayWithContacts(const Probe& probe, const ReplayModel& model, double 
             bodies[cmd.body].forces.push_back({cmd.a, cmd.b});
             break;
         case CommandKind::Step:
-            for (SimBody& b : bodies) stepBody(b, cmd.h, stepMistake, model.variant);
+            for (SimBody& b : bodies) stepSimBody(b, cmd.h, stepModel);
             for (std::size_t i = 0; i < bodies.size(); ++i) {
                 for (std::size_t j = i + 1; j < bodies.size(); ++j) collide(bodies[i], bodies[j], c, impulseMistake);
             }

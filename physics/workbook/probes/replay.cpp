@@ -48,39 +48,6 @@ std::vector<AnswerSlot> answerSlots(const Probe& probe)
 
 namespace {
 
-// One body of the simulated scene: what a student's simulator stores.
-struct SimBody {
-    double mass = 1.0;
-    Vec3 size = Vec3::Ones();
-    Vec3 x_W = Vec3::Zero(), v_W = Vec3::Zero();
-    Quat r_WB = Quat::Identity();
-    Vec3 L_W = Vec3::Zero();
-    Vec3 omega_W = Vec3::Zero();                  // the simulator's own omega, with its mistake
-    std::vector<std::pair<Vec3, Vec3>> forces;    // (p, f) for the next step
-    bool stepped = false;
-    // What a simulator keeps between steps (the several-step models of simulatorState()).
-    SimulatorState kept;
-};
-
-// One explicit Euler step of one body as the simulator with `model` takes it.
-HandEulerStep chainedStep(const SimBody& b, double h, const ReplayModel& model)
-{
-    BodyStepInputs in;
-    in.h = h;
-    in.mass = b.mass;
-    in.size = b.size;
-    in.x_W = b.x_W;
-    in.v_W = b.v_W;
-    in.q_WB = b.r_WB;
-    in.L_W = b.L_W;
-    in.forces = b.forces;
-    in.firstStep = !b.stepped;
-    // The step starts from the simulator's own omega_n (a mistake in omega carries on).
-    in.omega_W = b.omega_W;
-    enterState(b.kept, in);
-    return handEulerStep(in, model.mistake, model.variant);
-}
-
 Answer answerOf(const Vec3& x, const Vec3& v, const Vec3& omega, const Quat& r)
 {
     return {x.x(), x.y(), x.z(), v.x(), v.y(), v.z(), omega.x(), omega.y(), omega.z(), r.w(), r.x(), r.y(), r.z()};
@@ -94,16 +61,9 @@ Answers replay(const Probe& probe, const ReplayModel& model)
     Answers answers;
     for (const Command& c : probe.commands) {
         switch (c.kind) {
-        case CommandKind::AddBody: {
-            SimBody b;
-            b.x_W = c.a;
-            b.size = c.b;
-            b.mass = c.mass;
-            b.kept = newBodyState(b.size, b.mass, model);
-            b.r_WB = b.kept.r0_WB;
-            bodies.push_back(b);
+        case CommandKind::AddBody:
+            bodies.push_back(addSimBody(c.a, c.b, c.mass, model));
             break;
-        }
         case CommandKind::SetOrientation:
             bodies[c.body].r_WB = c.q.normalized();   // the protocol's r = q/|q|; omega untouched
             bodies[c.body].kept.orientationSet = true;
@@ -115,17 +75,7 @@ Answers replay(const Probe& probe, const ReplayModel& model)
             bodies[c.body].forces.push_back({c.a, c.b});
             break;
         case CommandKind::Step:
-            for (SimBody& b : bodies) {
-                const HandEulerStep s = chainedStep(b, c.h, model);
-                b.x_W = s.x_W;
-                b.v_W = s.v_W;
-                b.r_WB = s.q_WB;
-                b.L_W = s.L_W;
-                b.omega_W = s.omega_W;
-                keepState(s, b.kept);
-                b.forces.clear();   // the loads act for one step
-                b.stepped = true;
-            }
+            for (SimBody& b : bodies) stepSimBody(b, c.h, model);
             break;
         case CommandKind::State: {
             const SimBody& b = bodies[c.body];

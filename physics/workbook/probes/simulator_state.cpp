@@ -31,4 +31,55 @@ void keepState(const HandEulerStep& step, SimulatorState& s)
     s.keptq_W = step.loadsq_W;
 }
 
+namespace {
+
+// The inverse inertia the simulator stores after a step: the one its omega = Iinv_W L
+// uses (body-inverse-inertia: I0^-1; inertia-not-inverted: R I0 R^T).
+Mat3 storedInverseInertia(const HandEulerStep& s, Mistake m)
+{
+    if (m == Mistake::BodyInverseInertia) return s.I0inv_B;
+    if (m == Mistake::InertiaNotInverted) return s.R_WB * s.I0_B * s.R_WB.transpose();
+    return s.Iinv_W;
+}
+
+} // namespace
+
+SimBody addSimBody(const Vec3& x_W, const Vec3& size, double mass, const ReplayModel& model)
+{
+    SimBody b;
+    b.x_W = x_W;
+    b.size = size;
+    b.mass = mass;
+    b.kept = newBodyState(size, mass, model);
+    b.r_WB = b.kept.r0_WB;
+    return b;
+}
+
+void stepSimBody(SimBody& b, double h, const ReplayModel& model)
+{
+    BodyStepInputs in;
+    in.h = h;
+    in.mass = b.mass;
+    in.size = b.size;
+    in.x_W = b.x_W;
+    in.v_W = b.v_W;
+    in.q_WB = b.r_WB;
+    in.L_W = b.L_W;
+    in.forces = b.forces;
+    in.firstStep = !b.stepped;
+    in.omega_W = b.omega_W;   // the step starts from the simulator's own omega_n
+    enterState(b.kept, in);
+    const HandEulerStep s = handEulerStep(in, model.mistake, model.variant);
+    b.x_W = s.x_W;
+    b.v_W = s.v_W;
+    b.r_WB = s.q_WB;
+    b.L_W = s.L_W;
+    b.omega_W = s.omega_W;
+    b.Iinv_W = storedInverseInertia(s, model.mistake);
+    b.I0inv_B = s.I0inv_B;
+    keepState(s, b.kept);
+    b.forces.clear();   // the loads act for one step
+    b.stepped = true;
+}
+
 } // namespace rbw::probes
