@@ -48,9 +48,7 @@ using rain::FinalBox;
 using rain::RainBox;
 
 // Our solvers: one line each. The manifold model's solver settings go into the scene
-// through `configure` (nullptr: the defaults). The soft-step solver (issue 19, item 2)
-// is one more line, e.g.
-//   {"rbw soft step, symplectic Euler", "symplectic-euler", [](rbw::SceneDef& s) { s.solver = ...; }},
+// through `configure` (nullptr: the defaults).
 struct OurSolver {
     const char* name;
     const char* integrator;
@@ -59,6 +57,9 @@ struct OurSolver {
 constexpr OurSolver kOurSolvers[] = {
     {"rbw sequential impulses, symplectic Euler", "symplectic-euler", nullptr},
     {"rbw sequential impulses, explicit Euler", "explicit-euler", nullptr},
+    {"rbw soft step, symplectic Euler", "symplectic-euler",
+     [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SoftStep; }},
+    {"rbw soft step, explicit Euler", "explicit-euler", [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SoftStep; }},
 };
 
 // What one run of one engine gives: ms per step, the boxes one second before the end and
