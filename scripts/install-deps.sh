@@ -18,7 +18,7 @@ packages=(
   libbenchmark-dev
   libbullet-dev                    # bench/bench_contact.cpp: the box rain in Bullet 3.24 beside ours
   libgl1-mesa-dri xvfb xauth       # widget and GL tests run under xvfb-run on llvmpipe
-  dpkg-dev desktop-file-utils appstream   # tst_install: dpkg-shlibdeps for cpack's .deb, the validators
+  dpkg-dev file desktop-file-utils appstream groff-base   # tst_install: dpkg-shlibdeps and file for cpack's .deb, the validators, man
 )
 if [ "${1:-}" = "--fuzz" ]; then
   # clang 16, not Debian's default 14: clang 14 cannot compile libstdc++ 12's

@@ -160,7 +160,7 @@ void checkRefusedAndNothingLeft(const QString& extension, Write write)
             QVERIFY2(!folder.writableNow(), "precondition: the locked folder must not be writable");
             written = write(path, &error);
         }
-        QVERIFY2(!written, qPrintable(path));
+        QVERIFY2(!written, qPrintable(path + QStringLiteral(" was written; the writer said: ") + error));
         QVERIFY2(error.contains(path), qPrintable(QStringLiteral("the message \"%1\" does not name %2").arg(error, path)));
         QCOMPARE(folder.entries(), QStringList{existing});
         QCOMPARE(folder.existingContents(), kOldContents);
@@ -364,7 +364,23 @@ void TestExports::rbwStudyOutputRefused()
 {
     const QString why = whyNoLockedFolder();
     if (!why.isEmpty()) QSKIP(qPrintable(why));
-    checkRefusedAndNothingLeft(QStringLiteral("csv"), [](const QString& path, QString* error) {
+    // The child runs as nobody, who may not reach the build tree (a clone under root's
+    // 0700 home on a fresh machine): it gets its own copies of rbw and the scene in a
+    // folder everyone can read, so that exit 2 can only come from the refused --output.
+    QTemporaryDir reachable;
+    QVERIFY(reachable.isValid());
+    const QFileDevice::Permissions readAndRun = QFileDevice::ReadOwner | QFileDevice::WriteOwner |
+                                                QFileDevice::ExeOwner | QFileDevice::ReadGroup |
+                                                QFileDevice::ExeGroup | QFileDevice::ReadOther | QFileDevice::ExeOther;
+    QVERIFY(QFile::setPermissions(reachable.path(), readAndRun));
+    const QString rbwCopy = reachable.filePath(QStringLiteral("rbw"));
+    const QString sceneCopy = reachable.filePath(QStringLiteral("constant-spin.json"));
+    QVERIFY(QFile::copy(QStringLiteral(RBW_CLI_PATH), rbwCopy));
+    QVERIFY(QFile::copy(lessonPath(QStringLiteral("10-accuracy-lab/constant-spin.json")), sceneCopy));
+    QVERIFY(QFile::setPermissions(rbwCopy, readAndRun));
+    QVERIFY(QFile::setPermissions(sceneCopy, QFileDevice::ReadOwner | QFileDevice::WriteOwner |
+                                                 QFileDevice::ReadGroup | QFileDevice::ReadOther));
+    checkRefusedAndNothingLeft(QStringLiteral("csv"), [&rbwCopy, &sceneCopy](const QString& path, QString* error) {
         QProcess rbw;
         // Qt refuses to run with a real user other than the effective one ("running
         // setuid"): as root, the child becomes nobody entirely before it runs rbw.
@@ -375,8 +391,8 @@ void TestExports::rbwStudyOutputRefused()
                 _exit(125);
             }
         });
-        rbw.start(QStringLiteral(RBW_CLI_PATH),
-                  {QStringLiteral("study"), lessonPath(QStringLiteral("10-accuracy-lab/constant-spin.json")),
+        rbw.start(rbwCopy,
+                  {QStringLiteral("study"), sceneCopy,
                    QStringLiteral("--integrators"), QStringLiteral("explicit-euler"), QStringLiteral("--dt"),
                    QStringLiteral("0.1"), QStringLiteral("--t-end"), QStringLiteral("1"), QStringLiteral("--output"),
                    path});
@@ -384,7 +400,8 @@ void TestExports::rbwStudyOutputRefused()
             *error = QStringLiteral("rbw did not finish");
             return true;
         }
-        *error = QString::fromUtf8(rbw.readAllStandardError());
+        *error = QString::fromUtf8(rbw.readAllStandardError()) +
+                 QStringLiteral(" (exit %1)").arg(rbw.exitCode());
         // Exit status 2 (bad input) is the documented answer to an unwritable --output.
         return !(rbw.exitStatus() == QProcess::NormalExit && rbw.exitCode() == 2);
     });
