@@ -66,7 +66,7 @@ QString seriesName(const lab::ContactStudyRow& row)
 {
     // Told apart by their first words: the legend elides the end of a long name.
     if (row.model == sceneWord(ManifoldSolver::SoftStep)) return QObject::tr("soft step, %1 substeps").arg(row.iterations);
-    return row.model == "course" ? QObject::tr("course model (one impulse per corner)")
+    return row.model == sceneWord(ContactModel::Course) ? QObject::tr("course model (one impulse per corner)")
                                  : (row.iterations == 1 ? QObject::tr("manifold, 1 solver iteration")
                                                         : QObject::tr("manifold, %1 solver iterations").arg(row.iterations));
 }
