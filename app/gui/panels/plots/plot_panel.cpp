@@ -4,6 +4,7 @@
 #include "app/gui/panels/plots/export_dialog.h"
 #include "app/gui/panels/plots/plot_axis_range.h"
 #include "app/gui/panels/plots/plot_decimation.h"
+#include "physics/engine/world.h"
 
 #include <QAction>
 #include <QChart>
@@ -459,5 +460,15 @@ void PlotPanel::exportCsvInteractive()
     exportPlotInteractively(this, PlotExportFormat::Csv, QStringLiteral("plot.csv"),
                             [this](const QString& path, QString* error) { return exportCsv(path, error); });
 }
+
+void PlotPanel::sceneLoaded(const World& world)
+{
+    clear();
+    appendStep(world.time(), world.diagnostics());   // sample 0: t = 0, computed by the physics
+}
+
+void PlotPanel::stepRecorded(const StepTrace& trace) { appendStep(trace.time, trace.diagnostics); }
+
+void PlotPanel::rewound(long stepIndex) { truncate(static_cast<int>(stepIndex) + 1); }   // sample 0 is t = 0
 
 } // namespace rbw
