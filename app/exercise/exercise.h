@@ -5,7 +5,6 @@
 //   value_grid.h          the number grid and the portable draw from a seed
 //   exercise_draw.h       generateExercise(): the scene with drawn values, run and kept
 //                         only when it keeps the lesson's point
-//   scene_text.h          the drawn scene as the indented text of a scene file
 //   exercise_answers.h    the answer key from the physics' trace
 //   exercise_worksheet.h  the worksheet and its answer key as HTML
 #pragma once

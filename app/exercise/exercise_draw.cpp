@@ -1,8 +1,8 @@
 #include "app/exercise/exercise_draw.h"
 
 #include "app/exercise/scene_path.h"
-#include "app/exercise/scene_text.h"
 #include "app/exercise/value_grid.h"
+#include "app/output/json_text.h"
 #include "app/scene/scene_loader.h"
 #include "app/scene/scene_format.h"
 #include "physics/engine/quantity_catalogue.h"
@@ -122,7 +122,9 @@ GeneratedExercise generateExercise(const ExerciseSpec& spec, std::uint64_t seed)
         const QString name = sceneformat::key(sceneformat::Key::Name);
         doc.insert(name, spec.scene.value(name).toString(spec.lessonId) + ", seed " + QString::number(seed));
         if (!spec.description.isEmpty()) doc.insert(sceneformat::key(sceneformat::Key::Description), spec.description);
-        const QByteArray bytes = indentedSceneJson(doc);
+        // Laid out like the lessons' own files: the name first, then the description
+        // (of the scene; a body's or plane's name is the same key), the rest sorted.
+        const QByteArray bytes = jsontext::sceneFileText(doc, {name, sceneformat::key(sceneformat::Key::Description)});
         SceneLoadResult loaded = parseScene(bytes, spec.file);
         if (!loaded.ok()) {
             lastReason = "the scene does not load: " + loaded.errors.join("; ");

@@ -1,5 +1,6 @@
 #include "app/output/json_output.h"
 
+#include "app/output/json_text.h"
 #include "app/output/value_format.h"
 #include "physics/engine/diagnostic_catalogue.h"
 #include "physics/engine/inertia.h"
@@ -7,7 +8,6 @@
 #include "physics/engine/scene_words.h"
 
 #include <QJsonArray>
-#include <QJsonDocument>
 
 namespace rbw {
 
@@ -256,20 +256,6 @@ QJsonObject blowUpToJson(const StepStatus& status, const QString& sceneFile)
     return o;
 }
 
-namespace {
-
-// The members of an object as an indented document lays them out, without the braces
-// and without a final newline: `    "dt": 0.01,\n    "file": "a.json"`.
-QByteArray membersOf(const QJsonObject& o)
-{
-    if (o.isEmpty()) return {};
-    const QByteArray text = QJsonDocument(o).toJson(QJsonDocument::Indented);
-    // "{\n" + members + "\n}\n"
-    return text.mid(2, text.size() - 2 - 3);
-}
-
-} // namespace
-
 JsonRunWriter::JsonRunWriter(QIODevice& out, const World& world, const QString& sceneFile)
     : out_(out)
     , world_(world)
@@ -280,17 +266,15 @@ JsonRunWriter::JsonRunWriter(QIODevice& out, const World& world, const QString& 
 void JsonRunWriter::begin()
 {
     out_.write("{\n");
-    out_.write(membersOf(runHeaderToJson(world_, file_)));
+    out_.write(jsontext::indentedMembers(runHeaderToJson(world_, file_), 1));
     out_.write(",\n    \"trace\": [");
 }
 
 void JsonRunWriter::addTrace(const StepTrace& trace)
 {
     // The element as an indented document lays it out, two levels in (8 spaces).
-    QByteArray text = QJsonDocument(traceToJson(trace, world_.scene())).toJson(QJsonDocument::Indented);
-    text.chop(1);   // the final newline
-    text.replace("\n", "\n        ");
-    out_.write(traces_ == 0 ? "\n        " : ",\n        ");
+    QByteArray text = traces_ == 0 ? "\n        " : ",\n        ";
+    jsontext::appendIndented(text, traceToJson(trace, world_.scene()), 2);
     out_.write(text);
     ++traces_;
 }
@@ -304,7 +288,7 @@ void JsonRunWriter::finish()
 {
     closeTrace();
     out_.write(",\n");
-    out_.write(membersOf(runResultToJson(world_)));
+    out_.write(jsontext::indentedMembers(runResultToJson(world_), 1));
     out_.write("\n}\n");
 }
 
@@ -314,7 +298,7 @@ void JsonRunWriter::finishBlowUp(const StepStatus& status)
     QJsonObject o = blowUpToJson(status, file_);
     o.remove("file");   // in the header already
     out_.write(",\n");
-    out_.write(membersOf(o));
+    out_.write(jsontext::indentedMembers(o, 1));
     out_.write("\n}\n");
 }
 

@@ -1,10 +1,10 @@
 #include "app/scene/scene_writer.h"
 
 #include "app/output/atomic_file.h"
+#include "app/output/json_text.h"
 #include "app/scene/scene_format.h"
 
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QLocale>
 
 #include <array>
@@ -154,27 +154,11 @@ Layout layout(const SceneDef& s)
     return l;
 }
 
-// One JSON value on one line, through QJsonDocument (its escaping, its shortest
-// round-trip numbers), with a space after each comma.
-QByteArray oneLine(const QJsonValue& v)
-{
-    if (v.isArray()) {
-        QByteArrayList parts;
-        for (const QJsonValue& e : v.toArray()) parts << oneLine(e);
-        return '[' + parts.join(", ") + ']';
-    }
-    if (v.isObject()) {
-        const QJsonObject o = v.toObject();
-        QByteArrayList parts;
-        for (auto it = o.begin(); it != o.end(); ++it) parts << oneLine(it.key()) + ": " + oneLine(it.value());
-        return "{ " + parts.join(", ") + " }";
-    }
-    const QByteArray wrapped = QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact);
-    return wrapped.mid(1, wrapped.size() - 2);
-}
-
+// One body (force, ...) on one line, its keys in the documented order (a QJsonObject
+// would sort them); each key and value through the one JSON writer.
 QByteArray oneLine(const Members& members)
 {
+    using jsontext::oneLine;
     QByteArrayList parts;
     for (const Member& m : members) parts << oneLine(m.key) + ": " + oneLine(m.value);
     return "{ " + parts.join(", ") + " }";
@@ -200,14 +184,14 @@ QByteArray writeScene(const SceneDef& scene)
 {
     const Layout l = layout(scene);
     QByteArrayList lines;
-    for (const Member& m : l.settings) lines << "  " + oneLine(m.key) + ": " + oneLine(m.value);
+    for (const Member& m : l.settings) lines << "  " + jsontext::oneLine(m.key) + ": " + jsontext::oneLine(m.value);
     for (const auto& [key, list] : l.lists) {
         if (key != sceneformat::key(K::Bodies) && list.isEmpty()) continue;
         QByteArrayList items;
         for (const Members& m : list) items << "    " + oneLine(m);
-        lines << "  " + oneLine(key) + ": [\n" + items.join(",\n") + "\n  ]";
+        lines << "  " + jsontext::scalar(key) + ": [\n" + items.join(",\n") + "\n  ]";
     }
-    if (l.push) lines << "  " + oneLine(key(K::Push)) + ": " + oneLine(*l.push);
+    if (l.push) lines << "  " + jsontext::scalar(key(K::Push)) + ": " + oneLine(*l.push);
     return "{\n" + lines.join(",\n") + "\n}\n";
 }
 

@@ -38,6 +38,7 @@ const char* indexKindName(IndexKind k);   // "", "force", "torque", "probe", ...
 struct QuantityInfo {
     const char* key;       // unique in the catalogue: the C++ handle's name, e.g. "rk4_position"
     const char* id;        // the trace id, shared by a quantity's variants, e.g. "position"
+    const char* name;      // plain English display name, one per id, e.g. "kinetic energy after"
     Stage stage;
     IndexKind indexKind;
     const char* symbol;    // LaTeX, e.g. "\\boldsymbol{\\omega}"
@@ -84,7 +85,7 @@ struct ContactHeader {
     int bodyB = -1;            // -1 when B is a plane
     int plane = -1;            // index into SceneDef::planes, or -1
     const char* feature = "";  // "vertex-face", "face-vertex", "edge-edge", "vertex-plane"
-    const char* resolution = "";   // "single-point" (SAT), "per-point" or "average" (planes)
+    const char* resolution = "";   // "single-point" (SAT), "per-point" or "average" (planes), "manifold" (scene_words.h)
     int pointCount = 1;        // corners averaged into this contact ("average")
     bool separating = false;   // v_rel . n > 0: no impulse was applied
     std::vector<ImpulseIterate> iterations;   // manifold model: after each iteration, in order

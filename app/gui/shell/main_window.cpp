@@ -102,6 +102,7 @@ MainWindow::MainWindow(QWidget* parent)
     clock_.setSpeed(parameterBar_->speed());
 
     docks_ = buildDocks(this, lessons_->lessons(), traceModel_);   // before the menus: the View menu lists every dock
+    panels_ = {docks_.plotPanel, docks_.bodyPlotPanel, docks_.quantityPlots};
     sceneFiles_ = new SceneFiles(this);
     files_ = new SceneFileFlows({this, docks_.sceneEditor, docks_.editorDock, sceneFiles_, lessons_, &session_});
     table_ = new QuantityTableActions({docks_.traceView, traceModel_, docks_.codeView, docks_.codeDock, docks_.quantityPlots,
@@ -144,9 +145,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(&session_, &Session::sessionReset, this, &MainWindow::onSessionReset);
     connect(&session_, &Session::stepRecorded, this, &MainWindow::onStepRecorded);
     connect(&session_, &Session::rewound, this, [this](long stepIndex) {
-        docks_.plotPanel->truncate(static_cast<int>(stepIndex) + 1);   // sample 0 is t = 0
-        docks_.bodyPlotPanel->truncate(static_cast<int>(stepIndex) + 1);
-        docks_.quantityPlots->truncateAfter(stepIndex - 1);   // the trace of step k leads to state k + 1
+        for (SessionPanel* panel : panels_) panel->rewound(stepIndex);
         refresh_.mark(RefreshScheduler::All);
     });
     connect(&session_, &Session::stateChanged, this, &MainWindow::onStateChanged);
@@ -281,30 +280,22 @@ void MainWindow::onSessionReset()
 {
     const SceneDef& scene = session_.world()->scene();
     traceModel_->setStart(*session_.world());   // the state at t = 0 before the first step
-    docks_.plotPanel->clear();
+    for (SessionPanel* panel : panels_) panel->sceneLoaded(*session_.world());
     QStringList names;
     QList<bool> fixed;
     for (const BodyDef& b : scene.bodies) {
         names << QString::fromStdString(b.name);
         fixed << b.fixed;
     }
-    docks_.bodyPlotPanel->setBodies(names, fixed);
-    docks_.quantityPlots->setScene(names, fixed);   // another scene's plots go
     docks_.bodySwatches->setBodies(names, fixed);
     actions_->updateFollowMenu(scene);
-    docks_.quantityPlots->clearSamples();
     sceneView_->clearTrails();
-    // Sample 0: the initial state's diagnostics, computed by the physics.
-    docks_.plotPanel->appendStep(session_.world()->time(), session_.world()->diagnostics());
-    docks_.bodyPlotPanel->appendStep(session_.world()->time(), session_.world()->diagnostics());
     refresh_.mark(RefreshScheduler::All);
 }
 
 void MainWindow::onStepRecorded(const StepTrace& trace)
 {
-    docks_.plotPanel->appendStep(trace.time, trace.diagnostics);
-    docks_.bodyPlotPanel->appendStep(trace.time, trace.diagnostics);
-    docks_.quantityPlots->appendStep(trace);
+    for (SessionPanel* panel : panels_) panel->stepRecorded(trace);
     refresh_.mark(RefreshScheduler::All);
 }
 

@@ -11,6 +11,7 @@
 
 #include "app/core/playback_clock.h"
 #include "app/core/session.h"
+#include "app/core/session_panel.h"
 #include "app/gui/shell/lesson_controller.h"
 #include "app/gui/shell/refresh_scheduler.h"
 #include "app/gui/shell/shell_docks.h"
@@ -149,6 +150,7 @@ private:
     TraceModel* traceModel_ = nullptr;
     SceneView* sceneView_ = nullptr;
     ShellDocks docks_;
+    QList<SessionPanel*> panels_;   // told of every reset, step and rewind, in turn
     QLabel* statusLabel_ = nullptr;
     QLabel* alertLabel_ = nullptr;
     ParameterBar* parameterBar_ = nullptr;

@@ -2,6 +2,7 @@
 
 #include "physics/engine/course/box_plane.h"
 #include "physics/engine/course/contact_response.h"
+#include "physics/engine/scene_words.h"
 
 namespace rbw {
 
@@ -15,13 +16,15 @@ void BoxPlaneStage::run(StepContext& ctx)
             const int count = collideBoxPlane(poseOf(ctx, b), scene.planes[p], contacts_);
             if (count == 0) continue;
             if (scene.planeContacts == PlaneContactMode::Average) {
-                // One impulse at the average of the corners (Napier assessment).
-                resolveContact(ctx, averageContact(contacts_, 0, contacts_.size()), b, -1, p, "average", count);
+                // One impulse at the average of the corners (Napier assessment). The
+                // resolution is the mode's scene word (a literal, so .data() ends in '\0').
+                resolveContact(ctx, averageContact(contacts_, 0, contacts_.size()), b, -1, p,
+                               sceneWord(PlaneContactMode::Average).data(), count);
             } else {
                 // One impulse per corner, in turn, each seeing the velocities the
                 // previous ones left.
                 for (const ContactGeometry& g : contacts_) {
-                    resolveContact(ctx, g, b, -1, p, "per-point", 1);
+                    resolveContact(ctx, g, b, -1, p, sceneWord(PlaneContactMode::PerPoint).data(), 1);
                 }
             }
         }

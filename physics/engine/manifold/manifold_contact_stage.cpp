@@ -5,6 +5,7 @@
 #include "physics/engine/manifold/work_limits.h"
 #include "physics/engine/quantities.h"
 #include "physics/engine/course/contact_response.h"
+#include "physics/engine/scene_words.h"
 
 #include <algorithm>
 
@@ -287,7 +288,7 @@ void ManifoldContactStage::recordPoints(StepContext& ctx) const
             header.bodyB = m.b;
             header.plane = m.plane;
             header.feature = m.featureName();
-            header.resolution = "manifold";
+            header.resolution = sceneWord(ContactModel::Manifold).data();   // scene_words.h, a literal
             header.pointCount = m.count;
             header.separating = p.lambda_n == 0.0;
             header.iteration = soft ? SoftStepSolver::kIteration : ContactSolver::kIteration;

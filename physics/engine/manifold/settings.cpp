@@ -1,5 +1,7 @@
 #include "physics/engine/manifold/settings.h"
 
+#include "physics/engine/scene_words.h"
+
 #include <string>
 
 namespace rbw {
@@ -22,11 +24,12 @@ ManifoldSettings manifoldSettings(const SceneDef& scene)
 void checkContactModel(std::vector<SceneIssue>& out, const SceneDef& scene)
 {
     if (scene.contactModel != ContactModel::Course && scene.contactModel != ContactModel::Manifold) {
-        out.push_back({"contact_model", "must be \"course\" or \"manifold\""});
+        out.push_back({"contact_model", "must be " + sceneWordChoices<ContactModel>()});
         return;
     }
     if (scene.contactModel == ContactModel::Course) {
-        const char* hint = " belongs to the manifold model; add \"contact_model\": \"manifold\" or leave it out";
+        const std::string hint = " belongs to the manifold model; add \"contact_model\": \"" +
+                                 std::string(sceneWord(ContactModel::Manifold)) + "\" or leave it out";
         if (scene.solverIterations) out.push_back({"solver_iterations", std::string("the key") + hint});
         if (scene.sleep) out.push_back({"sleep", std::string("the key") + hint});
         if (scene.positionFix) out.push_back({"position_fix", std::string("the key") + hint});
@@ -40,10 +43,10 @@ void checkContactModel(std::vector<SceneIssue>& out, const SceneDef& scene)
     }
     if (scene.positionFix && *scene.positionFix != PositionFix::Ngs && *scene.positionFix != PositionFix::Baumgarte &&
         *scene.positionFix != PositionFix::None) {
-        out.push_back({"position_fix", "must be \"ngs\", \"baumgarte\" or \"none\""});
+        out.push_back({"position_fix", "must be " + sceneWordChoices<PositionFix>()});
     }
     if (scene.solver && *scene.solver != ManifoldSolver::SequentialImpulses && *scene.solver != ManifoldSolver::SoftStep) {
-        out.push_back({"solver", "must be \"sequential-impulses\" or \"soft-step\""});
+        out.push_back({"solver", "must be " + sceneWordChoices<ManifoldSolver>()});
     }
     const bool softStep = scene.solver && *scene.solver == ManifoldSolver::SoftStep;
     if (softStep) {
@@ -58,7 +61,8 @@ void checkContactModel(std::vector<SceneIssue>& out, const SceneDef& scene)
                                            "inside its substeps"});
         }
     } else if (scene.substeps) {
-        out.push_back({"substeps", "belongs to the soft step; add \"solver\": \"soft-step\""});
+        out.push_back({"substeps", "belongs to the soft step; add \"solver\": \"" +
+                                    std::string(sceneWord(ManifoldSolver::SoftStep)) + "\""});
     }
     if (scene.substeps && !(*scene.substeps >= 1 && *scene.substeps <= 64)) {
         out.push_back({"substeps", "must be a whole number from 1 to 64, got " + std::to_string(*scene.substeps)});

@@ -62,8 +62,8 @@ ContactStudyRow runOne(const ContactStudyConfig& config, ContactModel model, boo
     }
 
     ContactStudyRow row;
-    // the soft step by its scene word (scene_words.h), "soft-step"
-    row.model = model == ContactModel::Course ? "course" : (softStep ? std::string(sceneWord(ManifoldSolver::SoftStep)) : "manifold");
+    // the model by its scene word (scene_words.h): "course", "manifold", or the soft step's "soft-step"
+    row.model = softStep ? std::string(sceneWord(ManifoldSolver::SoftStep)) : std::string(sceneWord(model));
     row.iterations = model == ContactModel::Course ? 0 : (softStep ? manifoldSettings(scene).substeps : iterations);
     row.dt = h;
     row.steps = steps;

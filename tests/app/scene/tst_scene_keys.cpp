@@ -58,9 +58,7 @@ const QList<OtherFormat> kOtherFormats{
      {"body", "integrator", "mass", "size"}},
     {"app/gui/panels/derivation/derivation_view.cpp", "the rendered page's fields, read back from its JavaScript",
      {"body"}},
-    {"app/gui/panels/accuracy/", "the accuracy study's settings and columns; the contact study's model names "
-                                 "(physics/workbook/lab/contact_study.h)",
-     {"course", "dt", "integrator"}},
+    {"app/gui/panels/accuracy/", "the accuracy study's settings and columns", {"dt", "integrator"}},
     {"app/gui/shell/performance_probe.cpp", "the performance report (docs/performance.md)", {"bodies"}},
 };
 

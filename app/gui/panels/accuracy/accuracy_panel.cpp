@@ -31,7 +31,6 @@
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <cmath>
 
@@ -154,8 +153,9 @@ AccuracyPanel::AccuracyPanel(QWidget* parent) : QWidget(parent)
     mainLayout_->addWidget(left);
     mainLayout_->addWidget(splitter, 1);
 
-    watcher_ = new QFutureWatcher<lab::StudyResult>(this);
-    connect(watcher_, &QFutureWatcher<lab::StudyResult>::finished, this, &AccuracyPanel::onFinished);
+    runner_ = new StudyRunner<lab::StudyResult>(this);
+    connect(runner_, &StudyRunnerSignals::progressed, this, &AccuracyPanel::onProgress);
+    connect(runner_, &StudyRunnerSignals::finished, this, &AccuracyPanel::onFinished);
     connect(run_, &QPushButton::clicked, this, &AccuracyPanel::onRunClicked);
     connect(cancel_, &QPushButton::clicked, this, &AccuracyPanel::cancelStudy);
     connect(exportPng_, &QPushButton::clicked, this, &AccuracyPanel::onExportPng);
@@ -197,14 +197,14 @@ void AccuracyPanel::fitLayout(int availableWidth)
 
 AccuracyPanel::~AccuracyPanel()
 {
-    cancelFlag_ = true;
-    if (watcher_->isRunning()) watcher_->waitForFinished();
+    runner_->cancel();   // the study stops at its next step and is waited for
+    runner_->wait();
 }
 
 void AccuracyPanel::setScene(const SceneDef& scene, const QString& label)
 {
-    cancelStudy();
-    if (watcher_->isRunning()) watcher_->waitForFinished();
+    runner_->cancel();
+    runner_->wait();
     scene_ = scene;
     haveScene_ = true;
     label_ = label;
@@ -305,31 +305,19 @@ bool AccuracyPanel::startStudy()
         return false;
     }
 
-    cancelFlag_ = false;
     progress_->setValue(0);
     setStatus(tr("Running %1 runs…").arg(int(c.integrators.size() * c.dts.size())), false);
-    // The study runs on the thread pool; progress comes back as queued calls into
-    // this (GUI) thread. The destructor waits for the run, so `this` outlives it.
     const SceneDef scene = scene_;
-    watcher_->setFuture(QtConcurrent::run([this, scene, c]() {
-        return lab::runStudy(
-            scene, c,
-            [this](int done, int total) {
-                QMetaObject::invokeMethod(this, [this, done, total]() { onProgress(done, total); },
-                                          Qt::QueuedConnection);
-            },
-            &cancelFlag_);
-    }));
+    runner_->start([scene, c](const lab::StudyProgress& progress, const std::atomic<bool>* cancel) {
+        return lab::runStudy(scene, c, progress, cancel);
+    });
     updateButtons();
     return true;
 }
 
-void AccuracyPanel::cancelStudy()
-{
-    if (isRunning()) cancelFlag_ = true;
-}
+void AccuracyPanel::cancelStudy() { runner_->cancel(); }
 
-bool AccuracyPanel::isRunning() const { return watcher_->isRunning(); }
+bool AccuracyPanel::isRunning() const { return runner_->isRunning(); }
 
 const lab::StudyResult& AccuracyPanel::result() const { return model_->result(); }
 
@@ -354,7 +342,7 @@ void AccuracyPanel::onProgress(int done, int total)
 
 void AccuracyPanel::onFinished()
 {
-    const lab::StudyResult r = watcher_->result();
+    const lab::StudyResult r = runner_->result();
     model_->setResult(r);
     redraw();
     if (r.cancelled) {

@@ -3,17 +3,18 @@
 // integrator, plus the Pareto front over all of them (study_front.h), above a table
 // of the numbers (study_table_model.h).
 //
-// The study runs off the GUI thread (QtConcurrent::run); progress comes back through
-// queued calls, and Cancel sets an atomic flag the runner checks every step. A scene
+// The study runs off the GUI thread through the study panels' one runner
+// (study_runner.h): every progress report comes back in order, Cancel stops it at the
+// next step and the runs it finished are shown. A scene
 // without an exact answer (two bodies, planes, forces, ...) is refused with the
 // runner's reason, shown in the panel; Run stays disabled.
 #pragma once
 
 #include "app/gui/panels/accuracy/study_front.h"
+#include "app/gui/panels/accuracy/study_runner.h"
 #include "physics/workbook/lab/study.h"
 #include "physics/engine/scene.h"
 
-#include <QFutureWatcher>
 #include <QWidget>
 
 #include <atomic>
@@ -124,8 +125,7 @@ private:
     StudyTableModel* model_ = nullptr;
 
     StudyFront front_;
-    std::atomic<bool> cancelFlag_{false};
-    QFutureWatcher<lab::StudyResult>* watcher_ = nullptr;
+    StudyRunner<lab::StudyResult>* runner_ = nullptr;   // the study off the GUI thread
 };
 
 } // namespace rbw

@@ -25,7 +25,6 @@
 #include <QStandardItemModel>
 #include <QTableView>
 #include <QVBoxLayout>
-#include <QtConcurrent>
 
 #include <algorithm>
 #include <cmath>
@@ -66,7 +65,7 @@ QString seriesName(const lab::ContactStudyRow& row)
 {
     // Told apart by their first words: the legend elides the end of a long name.
     if (row.model == sceneWord(ManifoldSolver::SoftStep)) return QObject::tr("soft step, %1 substeps").arg(row.iterations);
-    return row.model == "course" ? QObject::tr("course model (one impulse per corner)")
+    return row.model == sceneWord(ContactModel::Course) ? QObject::tr("course model (one impulse per corner)")
                                  : (row.iterations == 1 ? QObject::tr("manifold, 1 solver iteration")
                                                         : QObject::tr("manifold, %1 solver iterations").arg(row.iterations));
 }
@@ -195,8 +194,10 @@ ContactStudyPanel::ContactStudyPanel(QWidget* parent) : QWidget(parent)
     layout->addWidget(chartView, 3);
     layout->addWidget(tableView_, 2);
 
-    watcher_ = new QFutureWatcher<lab::ContactStudyResult>(this);
-    connect(watcher_, &QFutureWatcher<lab::ContactStudyResult>::finished, this, &ContactStudyPanel::onFinished);
+    runner_ = new StudyRunner<lab::ContactStudyResult>(this);
+    connect(runner_, &StudyRunnerSignals::progressed, this,
+            [this](int done, int total) { progress_->setValue(int(std::lround(100.0 * done / total))); });
+    connect(runner_, &StudyRunnerSignals::finished, this, &ContactStudyPanel::onFinished);
     setStatus(tr("The boxes should end at rest without overlap: run a problem to see how far each model gets, "
                  "and at what cost."),
               false);
@@ -206,8 +207,8 @@ ContactStudyPanel::ContactStudyPanel(QWidget* parent) : QWidget(parent)
 
 ContactStudyPanel::~ContactStudyPanel()
 {
-    cancelFlag_ = true;
-    watcher_->waitForFinished();
+    runner_->cancel();   // the study stops at its next step and is waited for
+    runner_->wait();
 }
 
 void ContactStudyPanel::setProblem(lab::ContactProblem p) { problem_->setCurrentIndex(problem_->findData(static_cast<int>(p))); }
@@ -254,30 +255,18 @@ bool ContactStudyPanel::startStudy()
         setStatus(problems.join('\n'), true);
         return false;
     }
-    cancelFlag_ = false;
     progress_->setValue(0);
     setStatus(tr("Running…"), false);
-    // On the thread pool; progress comes back as queued calls. The destructor waits.
-    watcher_->setFuture(QtConcurrent::run([this, c]() {
-        return lab::runContactStudy(
-            c,
-            [this](int done, int total) {
-                QMetaObject::invokeMethod(
-                    this, [this, done, total]() { progress_->setValue(int(std::lround(100.0 * done / total))); },
-                    Qt::QueuedConnection);
-            },
-            &cancelFlag_);
-    }));
+    runner_->start([c](const lab::StudyProgress& progress, const std::atomic<bool>* cancel) {
+        return lab::runContactStudy(c, progress, cancel);
+    });
     updateButtons();
     return true;
 }
 
-void ContactStudyPanel::cancelStudy()
-{
-    if (isRunning()) cancelFlag_ = true;
-}
+void ContactStudyPanel::cancelStudy() { runner_->cancel(); }
 
-bool ContactStudyPanel::isRunning() const { return watcher_->isRunning(); }
+bool ContactStudyPanel::isRunning() const { return runner_->isRunning(); }
 
 QString ContactStudyPanel::statusText() const { return status_->text(); }
 
@@ -292,7 +281,7 @@ bool ContactStudyPanel::exportCsv(const QString& path, QString* error) const
 
 void ContactStudyPanel::onFinished()
 {
-    result_ = watcher_->result();
+    result_ = runner_->result();
     fillTable();
     if (result_.cancelled) {
         setStatus(tr("Cancelled after %1 of %2 runs.").arg(result_.rows.size()).arg(result_.runsPlanned), false);

@@ -10,13 +10,14 @@
 // iterations in full; the table shows each number short (h as 1/30) with every digit
 // in its tooltip.
 //
-// The study runs off the GUI thread (QtConcurrent::run); Cancel sets an atomic flag the
-// runner checks every step. The panel shows numbers from the runner only.
+// The study runs off the GUI thread through the study panels' one runner
+// (study_runner.h); Cancel stops it at the next step. The panel shows numbers from the
+// study only.
 #pragma once
 
+#include "app/gui/panels/accuracy/study_runner.h"
 #include "physics/workbook/lab/contact_study.h"
 
-#include <QFutureWatcher>
 #include <QWidget>
 
 #include <atomic>
@@ -96,8 +97,7 @@ private:
     QString baseStatus_;   // the status line without the note on zeros
     QString zeroNote_;
     lab::ContactStudyResult result_;
-    std::atomic<bool> cancelFlag_{false};
-    QFutureWatcher<lab::ContactStudyResult>* watcher_ = nullptr;
+    StudyRunner<lab::ContactStudyResult>* runner_ = nullptr;   // the study off the GUI thread
 };
 
 } // namespace rbw

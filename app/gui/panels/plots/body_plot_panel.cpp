@@ -5,6 +5,7 @@
 
 #include "app/gui/panels/plots/plot_axis_range.h"
 #include "app/output/atomic_file.h"
+#include "physics/engine/world.h"
 
 #include <QChart>
 #include <QChartView>
@@ -215,5 +216,21 @@ bool BodyPlotPanel::exportPng(const QString& path, QString* error)
     }
     return writeFileAtomically(path, png, error);
 }
+
+void BodyPlotPanel::sceneLoaded(const World& world)
+{
+    QStringList names;
+    QList<bool> fixed;
+    for (const BodyDef& b : world.scene().bodies) {
+        names << QString::fromStdString(b.name);
+        fixed << b.fixed;
+    }
+    setBodies(names, fixed);
+    appendStep(world.time(), world.diagnostics());   // sample 0: t = 0, computed by the physics
+}
+
+void BodyPlotPanel::stepRecorded(const StepTrace& trace) { appendStep(trace.time, trace.diagnostics); }
+
+void BodyPlotPanel::rewound(long stepIndex) { truncate(static_cast<int>(stepIndex) + 1); }   // sample 0 is t = 0
 
 } // namespace rbw

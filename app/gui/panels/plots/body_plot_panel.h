@@ -10,6 +10,7 @@
 // while the panel is visible).
 #pragma once
 
+#include "app/core/session_panel.h"
 #include "physics/engine/diagnostics.h"
 
 #include <QColor>
@@ -30,7 +31,7 @@ class QValueAxis;
 
 namespace rbw {
 
-class BodyPlotPanel : public QWidget {
+class BodyPlotPanel : public QWidget, public SessionPanel {
     Q_OBJECT
 public:
     enum Quantity { KineticEnergy, AngularMomentumNorm, QuantityCount };
@@ -58,6 +59,12 @@ public:
     // (QDockWidget::visibilityChanged; the widget itself stays "visible" there). Off
     // screen, samples are stored and the lines redrawn when it comes back.
     void setOnScreen(bool on);
+
+    // SessionPanel (app/core/session_panel.h): a scene's bodies and its first sample,
+    // one sample per step, the samples after a rewind dropped.
+    void sceneLoaded(const World& world) override;
+    void stepRecorded(const StepTrace& trace) override;
+    void rewound(long stepIndex) override;
 
 private:
     struct Chart {

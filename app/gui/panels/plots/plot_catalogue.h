@@ -1,6 +1,9 @@
-// The catalogue of plotted series: which number of Diagnostics (physics/engine/diagnostics.h)
-// each series shows, its stable id (the CSV column), its short legend label and the
-// chart it belongs to.
+// The catalogue of plotted series: which row of the diagnostics catalogue
+// (physics/engine/diagnostic_catalogue.h) each series shows, which part of it (the
+// value, a world-frame component or a vector's length) and the chart it belongs to.
+// The id, legend label and tooltip are made from that row, so no id is spelled here:
+// a scalar keeps the catalogue's id ("total_energy"), a vector's part appends "_x",
+// "_y", "_z" or "_norm" ("linear_momentum_norm"), as the CLI's CSV does for vectors.
 //
 // Glossary (all sums over the bodies that are not fixed, after a step, world frame)
 //   T_trans = sum 1/2 M |v|^2          Diagnostics::kineticTranslational   [J]
@@ -13,7 +16,7 @@
 // Euclidean length |P| or |L_O| of a recorded vector (for display only).
 #pragma once
 
-#include "physics/engine/diagnostics.h"
+#include "physics/engine/diagnostic_catalogue.h"
 
 #include <QString>
 #include <QStringView>
@@ -43,13 +46,19 @@ enum class PlotQuantity {
 };
 inline constexpr int kPlotQuantityCount = 12;
 
+// Which part of a diagnostic a series shows: a scalar's value, one world-frame
+// component of a vector, or the vector's Euclidean length (for display only).
+enum class PlotPart { Value, X, Y, Z, Norm };
+
 struct PlotSeriesInfo {
     PlotQuantity quantity;
-    const char* id;         // stable, ASCII: the CSV column and the API's series id
-    const char* label;      // short UTF-8 legend label, e.g. "T_trans", "|L_O|"
-    const char* meaning;    // tooltip text, e.g. "rotational kinetic energy Σ ½ ω·L"
+    const DiagnosticInfo<Diagnostics>* diagnostic;   // the catalogue row it shows
+    PlotPart part;
     PlotChart chart;
     bool visibleByDefault;  // totals and parts on, vector components off
+    QString id;             // stable, ASCII: the CSV column and the API's series id
+    QString label;          // short legend label, e.g. "T_trans", "L_O,x", "|L_O|"
+    QString meaning;        // tooltip text, e.g. "rotational kinetic energy Σ ½ ω·L"
 };
 
 struct PlotChartInfo {
@@ -70,5 +79,8 @@ double plotValue(PlotQuantity q, const Diagnostics& d);
 
 inline int plotIndex(PlotQuantity q) { return static_cast<int>(q); }
 inline int plotIndex(PlotChart c) { return static_cast<int>(c); }
+
+// The id of a series (plotSeriesInfo(q).id).
+inline const QString& plotSeriesId(PlotQuantity q) { return plotSeriesInfo(q).id; }
 
 } // namespace rbw

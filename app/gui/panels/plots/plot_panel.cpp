@@ -4,6 +4,7 @@
 #include "app/gui/panels/plots/export_dialog.h"
 #include "app/gui/panels/plots/plot_axis_range.h"
 #include "app/gui/panels/plots/plot_decimation.h"
+#include "physics/engine/world.h"
 
 #include <QAction>
 #include <QChart>
@@ -159,7 +160,7 @@ QWidget* PlotPanel::buildChartPage(PlotChart which)
     for (const PlotSeriesInfo& info : plotSeriesCatalogue()) {
         if (info.chart != which) continue;
         SeriesParts& s = series_[static_cast<std::size_t>(plotIndex(info.quantity))];
-        const QString label = QString::fromUtf8(info.label);
+        const QString label = info.label;
         const QColor colour = seriesColour(info.quantity);
 
         s.line = new QLineSeries(parts.chart);
@@ -176,7 +177,7 @@ QWidget* PlotPanel::buildChartPage(PlotChart which)
 
         s.box = new QCheckBox(label, page);
         s.box->setIcon(swatch(colour));
-        s.box->setToolTip(QString::fromUtf8(info.meaning));
+        s.box->setToolTip(info.meaning);
         s.box->setChecked(info.visibleByDefault);
         const PlotQuantity q = info.quantity;
         connect(s.box, &QCheckBox::toggled, this, [this, q](bool on) { applySeriesVisibility(q, on); });
@@ -257,7 +258,7 @@ QList<QPointF> PlotPanel::points(const QString& seriesId) const
 QStringList PlotPanel::seriesIds()
 {
     QStringList ids;
-    for (const PlotSeriesInfo& s : plotSeriesCatalogue()) ids << QString::fromLatin1(s.id);
+    for (const PlotSeriesInfo& s : plotSeriesCatalogue()) ids << s.id;
     return ids;
 }
 
@@ -291,7 +292,7 @@ void PlotPanel::applySeriesVisibility(PlotQuantity q, bool visible)
     for (QLegendMarker* marker : parts.chart->legend()->markers(s.line)) marker->setVisible(visible);
     axesDirty_ = true;
     scheduleRefresh();
-    emit seriesVisibilityChanged(QString::fromLatin1(plotSeriesInfo(q).id), visible);
+    emit seriesVisibilityChanged(plotSeriesId(q), visible);
 }
 
 PlotChart PlotPanel::currentChart() const
@@ -459,5 +460,15 @@ void PlotPanel::exportCsvInteractive()
     exportPlotInteractively(this, PlotExportFormat::Csv, QStringLiteral("plot.csv"),
                             [this](const QString& path, QString* error) { return exportCsv(path, error); });
 }
+
+void PlotPanel::sceneLoaded(const World& world)
+{
+    clear();
+    appendStep(world.time(), world.diagnostics());   // sample 0: t = 0, computed by the physics
+}
+
+void PlotPanel::stepRecorded(const StepTrace& trace) { appendStep(trace.time, trace.diagnostics); }
+
+void PlotPanel::rewound(long stepIndex) { truncate(static_cast<int>(stepIndex) + 1); }   // sample 0 is t = 0
 
 } // namespace rbw

@@ -18,6 +18,7 @@
 // the plots refresh at 10 Hz: the 3D view is what moves smoothly.
 #pragma once
 
+#include "app/core/session_panel.h"
 #include "app/gui/panels/plots/plot_catalogue.h"
 #include "app/gui/panels/plots/plot_series.h"
 
@@ -40,7 +41,7 @@ class QValueAxis;
 
 namespace rbw {
 
-class PlotPanel : public QWidget {
+class PlotPanel : public QWidget, public SessionPanel {
     Q_OBJECT
 public:
     explicit PlotPanel(QWidget* parent = nullptr);
@@ -53,6 +54,12 @@ public:
     // Keeps the first sampleCount samples (after a step back); clamped to [0, count].
     void truncate(int sampleCount);
     void clear();
+
+    // SessionPanel (app/core/session_panel.h): sample 0 is the first state's
+    // diagnostics, then one sample per recorded step; a rewind to state k keeps k + 1.
+    void sceneLoaded(const World& world) override;
+    void stepRecorded(const StepTrace& trace) override;
+    void rewound(long stepIndex) override;
 
     int sampleCount() const;
     // Every sample of a series (the full data, never decimated); empty for an unknown id.

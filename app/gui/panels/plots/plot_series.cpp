@@ -41,7 +41,7 @@ bool PlotSeries::append(double t, const Diagnostics& d, QString* error)
         const double v = plotValue(s.quantity, d);
         if (!std::isfinite(v)) {
             return fail(QStringLiteral("plot sample refused: %1 at t = %2 s is not finite")
-                            .arg(QString::fromUtf8(s.label))
+                            .arg(s.label)
                             .arg(t, 0, 'g', 17));
         }
         row[static_cast<std::size_t>(plotIndex(s.quantity))] = v;
@@ -106,7 +106,7 @@ QByteArray PlotSeries::csv() const
     out += "t";
     for (const PlotSeriesInfo& s : plotSeriesCatalogue()) {
         out += ',';
-        out += s.id;
+        out += s.id.toLatin1();
     }
     out += '\n';
     for (std::size_t i = 0; i < t_.size(); ++i) {

@@ -49,8 +49,8 @@ public:
     // Smallest and largest value of a series over all samples; empty when there are none.
     std::optional<ValueRange> valueRange(PlotQuantity q) const;
 
-    // The CSV text: a header "t,kinetic_translational,...,L_O_norm" (the catalogue's
-    // ids), then one row per sample. Numbers are the shortest text that reads back as
+    // The CSV text: a header "t,kinetic_energy_translational,...,angular_momentum_origin_norm"
+    // (the catalogue's ids), then one row per sample. Numbers are the shortest text that reads back as
     // the same double, as in the CLI's CSV (app/output/csv_output.cpp).
     QByteArray csv() const;
     // Writes csv() to path atomically (app/output/atomic_file.h). False with a message on failure.

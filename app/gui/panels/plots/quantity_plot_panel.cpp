@@ -2,6 +2,7 @@
 
 #include "app/core/step_history.h"
 #include "app/gui/style/body_colours.h"
+#include "physics/engine/world.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -181,5 +182,21 @@ void QuantityPlotPanel::refreshNow()
     // Only the plot on screen is redrawn; the others catch up when their tab is shown.
     if (auto* p = qobject_cast<QuantityPlot*>(tabs_->currentWidget())) p->refresh();
 }
+
+void QuantityPlotPanel::sceneLoaded(const World& world)
+{
+    QStringList names;
+    QList<bool> fixed;
+    for (const BodyDef& b : world.scene().bodies) {
+        names << QString::fromStdString(b.name);
+        fixed << b.fixed;
+    }
+    setScene(names, fixed);   // another scene's plots go
+    clearSamples();
+}
+
+void QuantityPlotPanel::stepRecorded(const StepTrace& trace) { appendStep(trace); }
+
+void QuantityPlotPanel::rewound(long stepIndex) { truncateAfter(stepIndex - 1); }   // the trace of step k leads to state k + 1
 
 } // namespace rbw

@@ -12,6 +12,7 @@
 // ~10 Hz).
 #pragma once
 
+#include "app/core/session_panel.h"
 #include "app/gui/panels/plots/quantity_plot.h"
 #include "app/gui/panels/plots/quantity_series.h"
 
@@ -32,7 +33,7 @@ namespace rbw {
 
 class StepHistory;
 
-class QuantityPlotPanel : public QWidget {
+class QuantityPlotPanel : public QWidget, public SessionPanel {
     Q_OBJECT
 public:
     explicit QuantityPlotPanel(QWidget* parent = nullptr);
@@ -52,6 +53,12 @@ public:
     void truncateAfter(long step);
     void clearSamples();
     void removeAll();
+
+    // SessionPanel (app/core/session_panel.h): a scene's bodies (its plots of another
+    // scene go, samples dropped), one step's trace, the steps after a rewind to state k.
+    void sceneLoaded(const World& world) override;
+    void stepRecorded(const StepTrace& trace) override;
+    void rewound(long stepIndex) override;
 
     int plotCount() const;
     QuantityPlot* plot(int i) const;

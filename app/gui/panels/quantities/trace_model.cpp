@@ -18,20 +18,13 @@ namespace rbw {
 
 namespace {
 
+// The catalogue's display name (quantity_catalogue.h), with which force, torque or
+// probe it is; inside a contact's group the index is the group itself.
 QString humanName(const TraceEntry& e)
 {
-    const QString id = QString::fromLatin1(e.info->id);
-    if (e.info->stage == Stage::Collision) {
-        // Inside a contact's group the index is the group itself.
-        if (e.info == &q::x_a || e.info == &q::x_b) return id;
-        if (e.info == &q::contact_point) return QObject::tr("contact point");
-        return QString(id).replace('_', ' ').replace(QStringLiteral(" a"), QStringLiteral(" A")).replace(QStringLiteral(" b"), QStringLiteral(" B"));
-    }
-    QString name = QString(id).replace('_', ' ');
-    if (e.index >= 0) {
-        name += e.info->stage == Stage::Probes ? QStringLiteral(" (probe %1)").arg(e.index)
-                                               : QStringLiteral(" #%1").arg(e.index);
-    }
+    QString name = QString::fromUtf8(e.info->name);
+    if (e.info->stage == Stage::Collision || e.index < 0) return name;
+    name += e.info->stage == Stage::Probes ? QStringLiteral(" (probe %1)").arg(e.index) : QStringLiteral(" #%1").arg(e.index);
     return name;
 }
 

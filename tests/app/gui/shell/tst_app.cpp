@@ -145,14 +145,16 @@ void TestApp::plotsFollowTheCli()
     QCOMPARE(run.exitCode, 0);
     const QJsonArray trace = QJsonDocument::fromJson(run.out).object().value("trace").toArray();
     QCOMPARE(trace.size(), steps);
-    const QList<QPointF> E = w.plotPanel()->points("total");
-    const QList<QPointF> Trot = w.plotPanel()->points("kinetic_rotational");
+    // The series and the JSON fields by the catalogue's ids (diagnostic_catalogue.h).
+    const QList<QPointF> E = w.plotPanel()->points(plotSeriesId(PlotQuantity::Total));
+    const QList<QPointF> Trot = w.plotPanel()->points(plotSeriesId(PlotQuantity::KineticRotational));
+    const auto field = [](const DiagnosticInfo<Diagnostics>& info) { return QString::fromLatin1(info.id.data(), qsizetype(info.id.size())); };
     QCOMPARE(E.size(), steps + 1);
     for (int k = 0; k < steps; ++k) {
         const QJsonObject d = trace[k].toObject().value("diagnostics").toObject();
         QCOMPARE(E[k + 1].x(), trace[k].toObject().value("time").toDouble());
-        QCOMPARE(E[k + 1].y(), d.value("total_energy").toDouble());
-        QCOMPARE(Trot[k + 1].y(), d.value("kinetic_energy_rotational").toDouble());
+        QCOMPARE(E[k + 1].y(), d.value(field(diag::total)).toDouble());
+        QCOMPARE(Trot[k + 1].y(), d.value(field(diag::kinetic_rotational)).toDouble());
     }
 }
 

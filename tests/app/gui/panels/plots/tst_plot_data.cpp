@@ -23,6 +23,8 @@ using rbw::PlotSeries;
 using rbw::ValueRange;
 using rbw::Vec3;
 
+Q_DECLARE_METATYPE(rbw::PlotQuantity)
+
 namespace {
 
 // A diagnostics record with every field distinct, so a mixed-up field shows.
@@ -39,12 +41,20 @@ Diagnostics sample(double s)
     return d;
 }
 
+// A diagnostics catalogue row's id, as the plots' CSV spells it.
+QByteArray idOf(const rbw::DiagnosticInfo<Diagnostics>& d)
+{
+    return QByteArray(d.id.data(), static_cast<qsizetype>(d.id.size()));
+}
+
 } // namespace
 
 class TestPlotData : public QObject {
     Q_OBJECT
 private slots:
     void catalogueIdsAreUniqueAndFound();
+    void seriesTextsComeFromTheDiagnosticsCatalogue_data();
+    void seriesTextsComeFromTheDiagnosticsCatalogue();
     void valuesAreTheRecordedNumbers();
     void refusesBadSamples_data();
     void refusesBadSamples();
@@ -69,13 +79,49 @@ void TestPlotData::catalogueIdsAreUniqueAndFound()
 {
     QSet<QString> ids;
     for (const rbw::PlotSeriesInfo& s : rbw::plotSeriesCatalogue()) {
-        ids.insert(QString::fromLatin1(s.id));
-        QCOMPARE(rbw::findPlotSeries(QString::fromLatin1(s.id)), &s);
+        ids.insert(s.id);
+        QCOMPARE(rbw::findPlotSeries(s.id), &s);
         QCOMPARE(&rbw::plotSeriesInfo(s.quantity), &s);
     }
     QCOMPARE(ids.size(), rbw::kPlotQuantityCount);
     // Negative control: an id that is not in the catalogue is not found.
     QVERIFY(rbw::findPlotSeries(u"kinetic") == nullptr);
+}
+
+void TestPlotData::seriesTextsComeFromTheDiagnosticsCatalogue_data()
+{
+    namespace diag = rbw::diag;
+    QTest::addColumn<PlotQuantity>("quantity");
+    QTest::addColumn<QByteArray>("id");
+    QTest::addColumn<QString>("label");
+    // A scalar keeps its row's id and symbol; a vector's part appends _x or _norm to the
+    // id and shows P_x / |P| (a comma where the symbol already has a subscript: L_O,x).
+    QTest::newRow("T_trans") << PlotQuantity::KineticTranslational << idOf(diag::kinetic_translational)
+                             << QStringLiteral("T_trans");
+    QTest::newRow("V") << PlotQuantity::Potential << idOf(diag::potential) << QStringLiteral("V");
+    QTest::newRow("E") << PlotQuantity::Total << idOf(diag::total) << QStringLiteral("E");
+    QTest::newRow("P_x") << PlotQuantity::P_x << idOf(diag::linear_momentum) + "_x" << QStringLiteral("P_x");
+    QTest::newRow("|P|") << PlotQuantity::P_norm << idOf(diag::linear_momentum) + "_norm" << QStringLiteral("|P|");
+    QTest::newRow("L_O,z") << PlotQuantity::L_O_z << idOf(diag::angular_momentum_origin) + "_z"
+                           << QStringLiteral("L_O,z");
+    QTest::newRow("|L_O|") << PlotQuantity::L_O_norm << idOf(diag::angular_momentum_origin) + "_norm"
+                           << QStringLiteral("|L_O|");
+}
+
+void TestPlotData::seriesTextsComeFromTheDiagnosticsCatalogue()
+{
+    QFETCH(PlotQuantity, quantity);
+    QFETCH(QByteArray, id);
+    QFETCH(QString, label);
+    const rbw::PlotSeriesInfo& s = rbw::plotSeriesInfo(quantity);
+    QCOMPARE(s.id.toLatin1(), id);
+    QCOMPARE(rbw::plotSeriesId(quantity), s.id);
+    QCOMPARE(s.label, label);
+    // The tooltip is the row's meaning (for a part, with what part it is in front).
+    const QString meaning = QString::fromUtf8(s.diagnostic->meaning.data(), static_cast<qsizetype>(s.diagnostic->meaning.size()));
+    QVERIFY2(s.meaning.endsWith(meaning), qPrintable(s.meaning));
+    // A value is read from a scalar row, a part from a vector row, never the other way.
+    QCOMPARE(s.part == rbw::PlotPart::Value, s.diagnostic->scalar != nullptr);
 }
 
 void TestPlotData::valuesAreTheRecordedNumbers()
@@ -187,8 +233,14 @@ void TestPlotData::csvRoundTripsEveryBit()
     const QList<QByteArray> lines = file.readAll().split('\n');
     // Header, one row per sample, and the empty piece after the final newline.
     QCOMPARE(lines.size(), scales.size() + 2);
-    QCOMPARE(lines[0], QByteArray("t,kinetic_translational,kinetic_rotational,potential,total,"
-                                  "P_x,P_y,P_z,P_norm,L_O_x,L_O_y,L_O_z,L_O_norm"));
+    // The header: t, the world's energies by their catalogue ids, then the two vectors'
+    // components and lengths (id + _x, _y, _z, _norm, as the CLI's CSV names a vector's parts).
+    QByteArray header = "t," + idOf(rbw::diag::kinetic_translational) + ',' + idOf(rbw::diag::kinetic_rotational) + ','
+                        + idOf(rbw::diag::potential) + ',' + idOf(rbw::diag::total);
+    for (const rbw::DiagnosticInfo<Diagnostics>* v : {&rbw::diag::linear_momentum, &rbw::diag::angular_momentum_origin}) {
+        for (const char* part : {"_x", "_y", "_z", "_norm"}) header += ',' + idOf(*v) + part;
+    }
+    QCOMPARE(lines[0], header);
     QVERIFY(lines.last().isEmpty());
     for (int i = 0; i < scales.size(); ++i) {
         const QList<QByteArray> cells = lines[i + 1].split(',');

@@ -22,6 +22,8 @@
 using rbw::Diagnostics;
 using rbw::PlotChart;
 using rbw::PlotPanel;
+using rbw::plotSeriesId;
+using Q = rbw::PlotQuantity;
 using rbw::ValueRange;
 
 namespace {
@@ -71,19 +73,20 @@ struct CliRow {
 CliRow cliRow(const QJsonObject& step)
 {
     const QJsonObject d = step.value("diagnostics").toObject();
-    const QJsonArray P = d.value("linear_momentum").toArray();
-    const QJsonArray L = d.value("angular_momentum_origin").toArray();
+    // The JSON's fields are named by the diagnostics catalogue, as the CSV's columns.
+    const auto field = [&d](const rbw::DiagnosticInfo<Diagnostics>& info) {
+        return d.value(QLatin1String(info.id.data(), static_cast<qsizetype>(info.id.size())));
+    };
+    const QJsonArray P = field(rbw::diag::linear_momentum).toArray();
+    const QJsonArray L = field(rbw::diag::angular_momentum_origin).toArray();
     auto length = [](const QJsonArray& v) {
         return std::sqrt(v[0].toDouble() * v[0].toDouble() + v[1].toDouble() * v[1].toDouble()
                          + v[2].toDouble() * v[2].toDouble());
     };
     CliRow row;
     row.t = step.value("time").toDouble();
-    row.recorded = {d.value("kinetic_energy_translational").toDouble(),
-                    d.value("kinetic_energy_rotational").toDouble(),
-                    d.value("potential_energy").toDouble(),
-                    d.value("total_energy").toDouble(),
-                    P[0].toDouble(), P[1].toDouble(), P[2].toDouble(),
+    row.recorded = {field(rbw::diag::kinetic_translational).toDouble(), field(rbw::diag::kinetic_rotational).toDouble(),
+                    field(rbw::diag::potential).toDouble(), field(rbw::diag::total).toDouble(), P[0].toDouble(), P[1].toDouble(), P[2].toDouble(),
                     L[0].toDouble(), L[1].toDouble(), L[2].toDouble()};
     row.lengths = {length(P), length(L)};
     return row;
@@ -99,12 +102,12 @@ struct PlotRow {
 PlotRow plotRow(const QHash<QString, QList<QPointF>>& series, int k)
 {
     PlotRow row;
-    row.t = series.value("total")[k].x();
-    for (const char* id : {"kinetic_translational", "kinetic_rotational", "potential", "total", "P_x", "P_y", "P_z",
-                           "L_O_x", "L_O_y", "L_O_z"}) {
-        row.recorded << series.value(QString::fromLatin1(id))[k].y();
+    row.t = series.value(plotSeriesId(Q::Total))[k].x();
+    for (Q q : {Q::KineticTranslational, Q::KineticRotational, Q::Potential, Q::Total, Q::P_x, Q::P_y, Q::P_z,
+                Q::L_O_x, Q::L_O_y, Q::L_O_z}) {
+        row.recorded << series.value(plotSeriesId(q))[k].y();
     }
-    row.lengths << series.value("P_norm")[k].y() << series.value("L_O_norm")[k].y();
+    row.lengths << series.value(plotSeriesId(Q::P_norm))[k].y() << series.value(plotSeriesId(Q::L_O_norm))[k].y();
     return row;
 }
 
@@ -199,12 +202,10 @@ void TestPlotPanel::defaultsAndUnknownIds()
 {
     PlotPanel panel;
     // Totals and energy parts on, vector components off.
-    for (const char* id : {"kinetic_translational", "kinetic_rotational", "potential", "total", "P_norm", "L_O_norm"}) {
-        QVERIFY2(panel.isSeriesVisible(QString::fromLatin1(id)), id);
-    }
-    for (const char* id : {"P_x", "P_y", "P_z", "L_O_x", "L_O_y", "L_O_z"}) {
-        QVERIFY2(!panel.isSeriesVisible(QString::fromLatin1(id)), id);
-    }
+    for (Q q : {Q::KineticTranslational, Q::KineticRotational, Q::Potential, Q::Total, Q::P_norm, Q::L_O_norm})
+        QVERIFY2(panel.isSeriesVisible(plotSeriesId(q)), qPrintable(plotSeriesId(q)));
+    for (Q q : {Q::P_x, Q::P_y, Q::P_z, Q::L_O_x, Q::L_O_y, Q::L_O_z})
+        QVERIFY2(!panel.isSeriesVisible(plotSeriesId(q)), qPrintable(plotSeriesId(q)));
     QCOMPARE(PlotPanel::seriesIds().size(), rbw::kPlotQuantityCount);
     QVERIFY(!panel.setSeriesVisible(QStringLiteral("omega"), true));
     QVERIFY(panel.lastError().contains(QStringLiteral("omega")));
@@ -311,7 +312,8 @@ void TestPlotPanel::truncateDropsLaterPoints()
     panel.refreshNow();
     const QHash<QString, QList<QPointF>> before = allSeries(panel);
     // The energy tab is current: its four lines are drawn with every sample.
-    const QStringList energy{"kinetic_translational", "kinetic_rotational", "potential", "total"};
+    QStringList energy;
+    for (Q q : {Q::KineticTranslational, Q::KineticRotational, Q::Potential, Q::Total}) energy << plotSeriesId(q);
     for (const QString& id : energy) QCOMPARE(panel.displayedPointCount(id), 200);
 
     // Step back to 150 steps: exactly the later 50 points go, the first 150 stay.
@@ -323,13 +325,13 @@ void TestPlotPanel::truncateDropsLaterPoints()
     panel.refreshNow();
     for (const QString& id : energy) QCOMPARE(panel.displayedPointCount(id), 150);
     // A line that was not drawn catches up when it is shown: P_x on its tab.
-    QVERIFY(panel.setSeriesVisible(QStringLiteral("P_x"), true));
+    QVERIFY(panel.setSeriesVisible(plotSeriesId(Q::P_x), true));
     panel.setCurrentChart(PlotChart::LinearMomentum);
-    QCOMPARE(panel.displayedPointCount(QStringLiteral("P_x")), 150);
-    QCOMPARE(panel.displayedPointCount(QStringLiteral("P_norm")), 150);
+    QCOMPARE(panel.displayedPointCount(plotSeriesId(Q::P_x)), 150);
+    QCOMPARE(panel.displayedPointCount(plotSeriesId(Q::P_norm)), 150);
     panel.setCurrentChart(PlotChart::Energy);
     // The time axis follows: t_max = 150 h now.
-    QVERIFY(panel.xAxisRange(PlotChart::Energy).max < before.value("total")[199].x());
+    QVERIFY(panel.xAxisRange(PlotChart::Energy).max < before.value(plotSeriesId(Q::Total))[199].x());
 
     // Running on from the snapshot gives the same 50 points again (the physics is
     // deterministic), so the panel ends where it was.
@@ -354,14 +356,14 @@ void TestPlotPanel::axisRangeCoversVisibleData_data()
     QTest::addColumn<QString>("visibleId");   // the only visible series of its chart
     QTest::addColumn<QList<double>>("values");
     QTest::addColumn<bool>("constant");
-    QTest::newRow("ramp") << QStringLiteral("kinetic_translational") << QList<double>{0, 2.5, 5, 7.5, 10} << false;
-    QTest::newRow("negative potential") << QStringLiteral("potential") << QList<double>{-50, -35, -20} << false;
-    QTest::newRow("constant total") << QStringLiteral("total") << QList<double>{3, 3, 3} << true;
-    QTest::newRow("constant zero") << QStringLiteral("kinetic_rotational") << QList<double>{0, 0} << true;
-    QTest::newRow("large values") << QStringLiteral("total") << QList<double>{2.0e6, 2.5e6, 2.1e6} << false;
-    QTest::newRow("tiny values") << QStringLiteral("kinetic_translational") << QList<double>{1e-6, 3e-6} << false;
-    QTest::newRow("P_x oscillating") << QStringLiteral("P_x") << QList<double>{-2, 1.5, -0.5, 2} << false;
-    QTest::newRow("L_O_z constant") << QStringLiteral("L_O_z") << QList<double>{-7, -7, -7} << true;
+    QTest::newRow("ramp") << plotSeriesId(Q::KineticTranslational) << QList<double>{0, 2.5, 5, 7.5, 10} << false;
+    QTest::newRow("negative potential") << plotSeriesId(Q::Potential) << QList<double>{-50, -35, -20} << false;
+    QTest::newRow("constant total") << plotSeriesId(Q::Total) << QList<double>{3, 3, 3} << true;
+    QTest::newRow("constant zero") << plotSeriesId(Q::KineticRotational) << QList<double>{0, 0} << true;
+    QTest::newRow("large values") << plotSeriesId(Q::Total) << QList<double>{2.0e6, 2.5e6, 2.1e6} << false;
+    QTest::newRow("tiny values") << plotSeriesId(Q::KineticTranslational) << QList<double>{1e-6, 3e-6} << false;
+    QTest::newRow("P_x oscillating") << plotSeriesId(Q::P_x) << QList<double>{-2, 1.5, -0.5, 2} << false;
+    QTest::newRow("L_O_z constant") << plotSeriesId(Q::L_O_z) << QList<double>{-7, -7, -7} << true;
 }
 
 void TestPlotPanel::axisRangeCoversVisibleData()
@@ -374,7 +376,7 @@ void TestPlotPanel::axisRangeCoversVisibleData()
     QVERIFY(info != nullptr);
     // Only the row's series is visible in its chart.
     for (const rbw::PlotSeriesInfo& s : rbw::plotSeriesCatalogue()) {
-        if (s.chart == info->chart) QVERIFY(panel.setSeriesVisible(QString::fromLatin1(s.id), s.quantity == info->quantity));
+        if (s.chart == info->chart) QVERIFY(panel.setSeriesVisible(s.id, s.quantity == info->quantity));
     }
     // Samples at t = 0.5, 1.0, ...; every series gets the row's value (the others are hidden).
     for (int i = 0; i < values.size(); ++i) {
@@ -415,8 +417,8 @@ void TestPlotPanel::hidingASeriesRescales()
     for (int i = 0; i <= 10; ++i) QVERIFY(panel.appendStep(0.1 * i, energyOnly(0.1 * i, 0, 0, 1000)));
     panel.refreshNow();
     QVERIFY(panel.yAxisRange(PlotChart::Energy).max >= 1000.0);
-    QVERIFY(panel.setSeriesVisible(QStringLiteral("total"), false));
-    QVERIFY(!panel.isSeriesVisible(QStringLiteral("total")));
+    QVERIFY(panel.setSeriesVisible(plotSeriesId(Q::Total), false));
+    QVERIFY(!panel.isSeriesVisible(plotSeriesId(Q::Total)));
     panel.refreshNow();
     const ValueRange y = panel.yAxisRange(PlotChart::Energy);
     QVERIFY2(y.max >= 1.05 && y.max <= 3.0, qPrintable(QString::number(y.max)));
@@ -428,17 +430,17 @@ void TestPlotPanel::checkBoxesToggleSeries()
     PlotPanel panel;
     QCheckBox* px = nullptr;
     for (QCheckBox* box : panel.findChildren<QCheckBox*>()) {
-        if (box->text() == QStringLiteral("P_x")) px = box;
+        if (box->text() == rbw::plotSeriesInfo(Q::P_x).label) px = box;
     }
     QVERIFY(px != nullptr);
     QVERIFY(!px->isChecked());
     QSignalSpy spy(&panel, &PlotPanel::seriesVisibilityChanged);
     px->setChecked(true);
-    QVERIFY(panel.isSeriesVisible(QStringLiteral("P_x")));
+    QVERIFY(panel.isSeriesVisible(plotSeriesId(Q::P_x)));
     QCOMPARE(spy.count(), 1);
-    QCOMPARE(spy[0][0].toString(), QStringLiteral("P_x"));
+    QCOMPARE(spy[0][0].toString(), plotSeriesId(Q::P_x));
     // The API ticks the box too.
-    QVERIFY(panel.setSeriesVisible(QStringLiteral("P_x"), false));
+    QVERIFY(panel.setSeriesVisible(plotSeriesId(Q::P_x), false));
     QVERIFY(!px->isChecked());
 }
 
@@ -447,7 +449,7 @@ void TestPlotPanel::liveUpdatesArriveByTimer()
     // Without refreshNow(): the throttle timer brings the points to the chart.
     PlotPanel panel;
     for (int i = 1; i <= 30; ++i) QVERIFY(panel.appendStep(0.01 * i, energyOnly(i, 0, 0, i)));
-    QTRY_COMPARE(panel.displayedPointCount(QStringLiteral("total")), 30);
+    QTRY_COMPARE(panel.displayedPointCount(plotSeriesId(Q::Total)), 30);
     QTRY_VERIFY(panel.yAxisRange(PlotChart::Energy).max >= 30.0);
 }
 
@@ -462,15 +464,15 @@ void TestPlotPanel::decimatesForDisplayOnly()
         if (i % 97 == 0) panel.refreshNow();   // appended in many refreshes, as when playing
     }
     panel.refreshNow();
-    const int shown = panel.displayedPointCount(QStringLiteral("kinetic_translational"));
+    const int shown = panel.displayedPointCount(plotSeriesId(Q::KineticTranslational));
     QVERIFY2(shown <= 1000 && shown >= 500, qPrintable(QString::number(shown)));
-    QCOMPARE(panel.points(QStringLiteral("kinetic_translational")).size(), 5000);
+    QCOMPARE(panel.points(plotSeriesId(Q::KineticTranslational)).size(), 5000);
     // The spike is inside the axis range (the data's envelope, not the thinned one).
     QVERIFY(panel.yAxisRange(PlotChart::Energy).max >= 50.0);
     // Back under the budget after a step back: every sample drawn again.
     panel.truncate(800);
     panel.refreshNow();
-    QCOMPARE(panel.displayedPointCount(QStringLiteral("kinetic_translational")), 800);
+    QCOMPARE(panel.displayedPointCount(plotSeriesId(Q::KineticTranslational)), 800);
 }
 
 void TestPlotPanel::csvExportRoundTrips()
@@ -579,9 +581,7 @@ void TestPlotPanel::snapshots()
         QVERIFY2(panel.exportPng(path, &error), qPrintable(error));
     }
     // The components too, and the whole panel at dock size on the energy tab.
-    for (const char* id : {"P_x", "P_y", "P_z", "L_O_x", "L_O_y", "L_O_z"}) {
-        QVERIFY(panel.setSeriesVisible(QString::fromLatin1(id), true));
-    }
+    for (Q q : {Q::P_x, Q::P_y, Q::P_z, Q::L_O_x, Q::L_O_y, Q::L_O_z}) QVERIFY(panel.setSeriesVisible(plotSeriesId(q), true));
     for (int c = 1; c < rbw::kPlotChartCount; ++c) {
         panel.setCurrentChart(static_cast<PlotChart>(c));
         QTest::qWait(50);

@@ -17,6 +17,7 @@
 #include "app/gui/panels/quantities/trace_model.h"
 #include "app/gui/panels/quantities/trace_view.h"
 #include "app/output/value_format.h"
+#include "physics/engine/quantities.h"
 #include "physics/engine/world.h"
 #include "tests/test_support.h"
 
@@ -164,6 +165,8 @@ private slots:
     void valuesFitAt1366();
     void startBeforeTheFirstStep();
     void collisionFirst();
+    void namesComeFromTheCatalogue_data();
+    void namesComeFromTheCatalogue();
     void matrixWithoutTrailingZeros();
 };
 
@@ -292,6 +295,49 @@ void TestTraceView::collisionFirst()
     model.setTrace(trace, free.scene());
     QVERIFY(!model.integrationBeforeImpulse());
     QCOMPARE(model.index(0, 0).data().toString(), QStringLiteral("Forces"));
+}
+
+// The Quantity column shows the catalogue's display name (QuantityInfo::name), with the
+// force's or probe's number; a contact's rows carry no number (the group is the contact).
+// The old names were made by replacing " a" with " A", which gave "kinetic energy After".
+void TestTraceView::namesComeFromTheCatalogue_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<QString>("id");
+    QTest::addColumn<QString>("name");
+    const QString collision = QStringLiteral("03-two-box-collision/scene.json");
+    const QString single = QStringLiteral("02-single-body/scene.json");
+    const auto id = [](const QuantityInfo& q) { return QString::fromLatin1(q.id); };
+    QTest::newRow("energy before") << collision << id(q::kinetic_energy_before) << QStringLiteral("kinetic energy before");
+    QTest::newRow("energy after") << collision << id(q::kinetic_energy_after) << QStringLiteral("kinetic energy after");
+    QTest::newRow("contact point") << collision << id(q::contact_point) << QStringLiteral("contact point");
+    QTest::newRow("body A") << collision << id(q::velocity_a) << QStringLiteral("velocity A");
+    QTest::newRow("inverse mass") << collision << id(q::inv_mass_a) << QStringLiteral("inverse mass A");
+    QTest::newRow("omega") << single << id(q::angular_velocity) << QStringLiteral("angular velocity");
+    QTest::newRow("force #0") << single << id(q::applied_force) << QStringLiteral("applied force #0");
+    QTest::newRow("probe 0") << single << id(q::probe_position) << QStringLiteral("probe position (probe 0)");
+}
+
+void TestTraceView::namesComeFromTheCatalogue()
+{
+    QFETCH(QString, scene);
+    QFETCH(QString, id);
+    QFETCH(QString, name);
+    // Lesson 3 up to its first impulse (as collisionFirst), lesson 2 one step.
+    World world(test::lessonScene(scene));
+    StepTrace trace;
+    bool impulse = false;
+    for (int k = 0; k < 3 && !impulse; ++k) {
+        QVERIFY(world.step(&trace).ok);
+        for (const ContactHeader& c : trace.contacts) impulse = impulse || !c.separating;
+    }
+    TraceModel model;
+    model.setTrace(trace, world.scene());
+    QString shown;
+    forEachRow(&model, QModelIndex(), [&](const QModelIndex& row) {
+        if (shown.isEmpty() && row.data(TraceModel::IdRole).toString() == id) shown = row.data(TraceModel::NameRole).toString();
+    });
+    QCOMPARE(shown, name);   // empty (the row was not found) fails too
 }
 
 // Lesson 5 at its start: R = Id and I⁻¹ = 6·Id show as "1", "6" and "0" (no
