@@ -55,8 +55,10 @@ struct OurSolver {
     void (*configure)(rbw::SceneDef&);
 };
 constexpr OurSolver kOurSolvers[] = {
-    {"rbw sequential impulses, symplectic Euler", "symplectic-euler", nullptr},
-    {"rbw sequential impulses, explicit Euler", "explicit-euler", nullptr},
+    {"rbw sequential impulses, symplectic Euler", "symplectic-euler",
+     [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SequentialImpulses; }},
+    {"rbw sequential impulses, explicit Euler", "explicit-euler",
+     [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SequentialImpulses; }},
     {"rbw soft step, symplectic Euler", "symplectic-euler",
      [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SoftStep; }},
     {"rbw soft step, explicit Euler", "explicit-euler", [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SoftStep; }},

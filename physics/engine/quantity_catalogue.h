@@ -221,7 +221,7 @@ inline constexpr QuantityInfo kQuantityCatalogue[] = {
     {"soft_substep", "substep_length", "substep length", Stage::Collision, IndexKind::None, "h_s", "h_s",
      "h_s = h / n_{\\text{sub}}", Frame::None, "s"},
     {"soft_contact_hertz", "contact_hertz", "contact hertz", Stage::Collision, IndexKind::None, "f", "f",
-     "f = \\min\\big(f_c,\\ \\tfrac{1}{8 h_s}\\big)\\ \\text{(twice that against a fixed body or a plane)}", Frame::None, "Hz"},
+     "f = \\tfrac{1}{8 h_s}\\ \\text{(twice that against a fixed body or a plane)}", Frame::None, "Hz"},
     {"soft_bias_rate", "bias_rate", "bias rate", Stage::Collision, IndexKind::None, "\\beta_s", "β_s",
      "\\beta_s = \\frac{\\omega}{2\\zeta + h_s\\omega},\\ \\omega = 2\\pi f", Frame::None, "1/s"},
     {"soft_mass_scale", "mass_scale", "mass scale", Stage::Collision, IndexKind::None, "s_m", "s_m",

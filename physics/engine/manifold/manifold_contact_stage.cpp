@@ -265,7 +265,7 @@ void ManifoldContactStage::solveSoftStep(StepContext& ctx)
     solver.store(w.manifolds, w.bodies);
     w.iterationsUsed = substeps;
     record(ctx.trace, q::soft_substep, -1, h_s);
-    record(ctx.trace, q::soft_contact_hertz, -1, cappedContactHertz(w.settings.contactHertz, h_s));
+    record(ctx.trace, q::soft_contact_hertz, -1, softContactHertz(w.settings.contactHertzPerSubstepRate, h_s));
     record(ctx.trace, q::soft_bias_rate, -1, solver.contactSoftness().biasRate);
     record(ctx.trace, q::soft_mass_scale, -1, solver.contactSoftness().massScale);
     record(ctx.trace, q::soft_impulse_scale, -1, solver.contactSoftness().impulseScale);

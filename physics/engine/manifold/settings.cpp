@@ -48,17 +48,20 @@ void checkContactModel(std::vector<SceneIssue>& out, const SceneDef& scene)
     if (scene.solver && *scene.solver != ManifoldSolver::SequentialImpulses && *scene.solver != ManifoldSolver::SoftStep) {
         out.push_back({"solver", "must be " + sceneWordChoices<ManifoldSolver>()});
     }
-    const bool softStep = scene.solver && *scene.solver == ManifoldSolver::SoftStep;
+    // The solver the scene runs: its own "solver" or the default (the soft step)
+    const bool softStep = (scene.solver ? *scene.solver : ManifoldSettings{}.solver) == ManifoldSolver::SoftStep;
     if (softStep) {
         // The soft step has its own iterations (one solve and one relax per substep) and
         // its own position correction (the push-out inside the substeps).
+        const std::string which = scene.solver ? "" : " (the manifold model's default solver)";
+        const std::string hint = scene.solver ? "" : "; add \"solver\": \"sequential-impulses\" to use it";
         if (scene.solverIterations) {
-            out.push_back({"solver_iterations", "belongs to the sequential impulses; the soft step iterates once per "
-                                                "substep (\"substeps\")"});
+            out.push_back({"solver_iterations", "belongs to the sequential impulses; the soft step" + which +
+                                                    " iterates once per substep (\"substeps\")" + hint});
         }
         if (scene.positionFix) {
-            out.push_back({"position_fix", "belongs to the sequential impulses; the soft step pushes overlap out "
-                                           "inside its substeps"});
+            out.push_back({"position_fix", "belongs to the sequential impulses; the soft step" + which +
+                                               " pushes overlap out inside its substeps" + hint});
         }
     } else if (scene.substeps) {
         out.push_back({"substeps", "belongs to the soft step; add \"solver\": \"" +

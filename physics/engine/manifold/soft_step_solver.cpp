@@ -50,10 +50,10 @@ Softness makeSoft(double hertz, double zeta, double h)
     return Softness{omega / a1, a2 * a3, a3};
 }
 
-double cappedContactHertz(double contactHertz, double h_s)
+double softContactHertz(double hertzPerSubstepRate, double h_s)
 {
-    // f <= 1/4 of the substep's Nyquist frequency 1 / (2 h_s): f <= 1 / (8 h_s)
-    return std::min(contactHertz, 0.125 / h_s);
+    // f = k / h_s (k = 1/8: a quarter of the substep's Nyquist frequency 1 / (2 h_s))
+    return hertzPerSubstepRate / h_s;
 }
 
 void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies, int planeBody,
@@ -65,7 +65,7 @@ void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector
     h_s_ = h_s;
     maxPushOut_ = settings.maxPushOut;
     // Box2D: stiffer against what cannot move, so that a pile does not sink into the ground
-    const double f = cappedContactHertz(settings.contactHertz, h_s);
+    const double f = softContactHertz(settings.contactHertzPerSubstepRate, h_s);
     contact_ = makeSoft(f, settings.contactDampingRatio, h_s);
     static_ = makeSoft(2.0 * f, settings.contactDampingRatio, h_s);
     for (Manifold& m : manifolds) {
@@ -77,7 +77,8 @@ void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector
         const Vec3 xB_W = startB != nullptr ? startB->x_W : Vec3::Zero();
         const bool movesB = B.invM > 0.0 || !B.Iinv_W.isZero(0.0);
         constraints_.push_back(Constraint{m.n_W, m.t1_W, m.t2_W, m.mu, m.restitution, m.a, bIndex,
-                                          static_cast<int>(points_.size()), m.count, movesB ? contact_ : static_});
+                                          static_cast<int>(points_.size()), m.count, A.invM, B.invM,
+                                          movesB ? contact_ : static_});
         const double invMAB = A.invM + B.invM;
         for (int k = 0; k < m.count; ++k) {
             ManifoldPoint& mp = m.points[static_cast<std::size_t>(k)];
@@ -87,6 +88,15 @@ void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector
             p.r_B_W = mp.p_W - xB_W;
             // s_base = s_0 - n . (r_A - r_B)
             p.s_base = mp.separation - m.n_W.dot(p.r_A_W - p.r_B_W);
+            // rn = r x n and I^-1 (r x n), for A and B
+            p.rn_A_W = p.r_A_W.cross(m.n_W);
+            p.rn_B_W = p.r_B_W.cross(m.n_W);
+            p.Irn_A_W = A.Iinv_W * p.rn_A_W;
+            p.Irn_B_W = B.Iinv_W * p.rn_B_W;
+            p.It1_A_W = A.Iinv_W * p.r_A_W.cross(m.t1_W);
+            p.It1_B_W = B.Iinv_W * p.r_B_W.cross(m.t1_W);
+            p.It2_A_W = A.Iinv_W * p.r_A_W.cross(m.t2_W);
+            p.It2_B_W = B.Iinv_W * p.r_B_W.cross(m.t2_W);
             // m_d = 1 / K_dd for d = n, t1, t2 (contact_axis.h)
             p.m_n = ContactAxis(p.r_A_W, p.r_B_W, m.n_W, A.Iinv_W, B.Iinv_W).mass(invMAB);
             p.m_t1 = ContactAxis(p.r_A_W, p.r_B_W, m.t1_W, A.Iinv_W, B.Iinv_W).mass(invMAB);
@@ -130,7 +140,11 @@ void SoftStepSolver::warmStart(std::vector<SolverBody>& bodies)
             Point& p = points_[static_cast<std::size_t>(c.first + k)];
             // P = lambda_n n + lambda_t1 t1 + lambda_t2 t2, the impulses of the last substep
             const Vec3 P_W = p.lambda_n * c.n_W + p.lambda_t1 * c.t1_W + p.lambda_t2 * c.t2_W;
-            applyImpulse(A, B, p.r_A_W, p.r_B_W, P_W);
+            // v_A += P / M_A, omega_A += I_A^-1 (r_A x P) by the rows' precomputed images; B opposite
+            A.v_W += c.invM_A * P_W;
+            A.omega_W += p.lambda_n * p.Irn_A_W + p.lambda_t1 * p.It1_A_W + p.lambda_t2 * p.It2_A_W;
+            B.v_W -= c.invM_B * P_W;
+            B.omega_W -= p.lambda_n * p.Irn_B_W + p.lambda_t1 * p.It1_B_W + p.lambda_t2 * p.It2_B_W;
             p.P_n += p.lambda_n;
             p.P_t1 += p.lambda_t1;
             p.P_t2 += p.lambda_t2;
@@ -164,14 +178,20 @@ void SoftStepSolver::solveRows(std::vector<SolverBody>& bodies, const std::vecto
                 massScale = c.softness.massScale;
                 impulseScale = c.softness.impulseScale;
             }
-            const double v_n = relativeVelocity(A, B, p.r_A_W, p.r_B_W).dot(c.n_W);
+            // v_n = (v_A + omega_A x r_A - v_B - omega_B x r_B) . n
+            //     = n . (v_A - v_B) + omega_A . (r_A x n) - omega_B . (r_B x n)
+            const double v_n = c.n_W.dot(A.v_W - B.v_W) + A.omega_W.dot(p.rn_A_W) - B.omega_W.dot(p.rn_B_W);
             // dlambda = -m_n massScale (v_n + bias) - impulseScale lambda_n, lambda_n >= 0
             const double candidate = p.lambda_n - p.m_n * massScale * (v_n + bias) - impulseScale * p.lambda_n;
             const double next = std::max(candidate, 0.0);
             const double dn = next - p.lambda_n;
             p.lambda_n = next;
             p.P_n += dn;
-            applyImpulse(A, B, p.r_A_W, p.r_B_W, dn * c.n_W);
+            // dP = dn n: v_A += dn n / M_A, omega_A += dn I_A^-1 (r_A x n); B opposite
+            A.v_W += (dn * c.invM_A) * c.n_W;
+            A.omega_W += dn * p.Irn_A_W;
+            B.v_W -= (dn * c.invM_B) * c.n_W;
+            B.omega_W -= dn * p.Irn_B_W;
         }
         // Friction in the relax pass only, as Box2D v3's b2SolveContact does (useBias ==
         // false): friction against the push-out velocities let the rain's columns topple
@@ -198,7 +218,13 @@ void SoftStepSolver::solveRows(std::vector<SolverBody>& bodies, const std::vecto
             p.lambda_t2 = l2;
             p.P_t1 += d1;
             p.P_t2 += d2;
-            applyImpulse(A, B, p.r_A_W, p.r_B_W, d1 * c.t1_W + d2 * c.t2_W);
+            // dP = d1 t1 + d2 t2: v_A += dP / M_A,
+            // omega_A += d1 I_A^-1 (r_A x t1) + d2 I_A^-1 (r_A x t2); B opposite
+            const Vec3 dP_W = d1 * c.t1_W + d2 * c.t2_W;
+            A.v_W += c.invM_A * dP_W;
+            A.omega_W += d1 * p.It1_A_W + d2 * p.It2_A_W;
+            B.v_W -= c.invM_B * dP_W;
+            B.omega_W -= d1 * p.It1_B_W + d2 * p.It2_B_W;
         }
     }
 }

@@ -1,7 +1,7 @@
 // The soft-step contact solver of the manifold model ("solver": "soft-step"; E. Catto,
 // "Solver2D", 2024, and Box2D v3's contact_solver.c / solver.c, read side by side with
 // this file; docs/collisions.md, "The soft step"). One step of length h is cut into
-// n substeps of h_s = h / n (substeps, default 4); per step and per substep:
+// n substeps of h_s = h / n (substeps, default 5); per step and per substep:
 //
 //   prepare()                     once: anchors, base separations, effective masses,
 //                                 softness, start normal velocities, warm-start impulses
@@ -16,8 +16,9 @@
 //                                 step's impulse sums into the bodies (contact loads)
 //
 // A soft contact (Box2D b2MakeSoft) is a spring-damper of frequency f (contact_hertz,
-// capped at a quarter of the substep rate's Nyquist, f <= 1/(8 h_s), as Box2D does;
-// twice that against a fixed body or a plane) and damping ratio zeta:
+// f = 1/(8 h_s), a quarter of the substep rate's Nyquist: Box2D's cap, which its 30 Hz
+// default meets at 4 substeps of 1/60 s; twice that against a fixed body or a plane)
+// and damping ratio zeta:
 //   omega = 2 pi f,  a1 = 2 zeta + h_s omega,  a2 = h_s omega a1,  a3 = 1 / (1 + a2)
 //   biasRate = omega / a1,  massScale = a2 a3,  impulseScale = a3
 // and a normal row at a point with current separation s and normal velocity v_n:
@@ -67,8 +68,10 @@ struct Softness {
 // stepped with h (rigid, {0, 1, 0}, for hertz = 0). massScale + impulseScale = 1.
 Softness makeSoft(double hertz, double zeta, double h);
 
-// The contact frequency a step uses: min(contactHertz, 1 / (8 h_s)) (Box2D's cap).
-double cappedContactHertz(double contactHertz, double h_s);
+// The contact frequency a step uses: f = k / h_s, k = hertzPerSubstepRate (1/8: Box2D's
+// cap, a quarter of the substep's Nyquist frequency; Box2D's 30 Hz at its 4 substeps of
+// 1/60 s). Relative to the substep rate, so more substeps make stiffer contacts.
+double softContactHertz(double hertzPerSubstepRate, double h_s);
 
 // A body's motion over the substeps (Box2D's b2BodyState delta position and rotation).
 struct SubstepMotion {
@@ -125,6 +128,11 @@ private:
 
     struct Point {
         Vec3 r_A_W, r_B_W;
+        // The normal row's angular parts, fixed for the step (the anchors and I^-1 are):
+        // rn_A = r_A x n, rn_B = r_B x n and their I^-1 images (as Bullet's btSolverConstraint)
+        Vec3 rn_A_W, rn_B_W, Irn_A_W, Irn_B_W;
+        // the friction rows' I^-1 (r x t1), I^-1 (r x t2), for A and B
+        Vec3 It1_A_W, It1_B_W, It2_A_W, It2_B_W;
         double s_base;
         double m_n, m_t1, m_t2;
         double v_n0;
@@ -136,6 +144,7 @@ private:
         double mu, restitution;
         int a, b;
         int first, count;
+        double invM_A, invM_B;   // [1/kg]
         Softness softness;
     };
     std::vector<Constraint> constraints_;

@@ -58,6 +58,7 @@ ContactStudyRow runOne(const ContactStudyConfig& config, ContactModel model, boo
     if (softStep) {
         scene.solver = ManifoldSolver::SoftStep;
     } else if (model == ContactModel::Manifold) {
+        scene.solver = ManifoldSolver::SequentialImpulses;   // not the default any more
         scene.solverIterations = iterations;
     }
 

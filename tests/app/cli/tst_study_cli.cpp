@@ -162,8 +162,8 @@ void TestStudyCli::contactStudyCsv()
     QCOMPARE(rows[0].join(','), QStringLiteral("problem,model,iterations,dt,steps,t_end,deepest_overlap,deepest_below,"
                                                "drift,energy_gained,kinetic_energy_end,moving_end,ns_per_step,status"));
     QCOMPARE(rows[1].mid(0, 6), (QStringList{"resting-box", "course", "", "0.016666666666666666", "60", "1"}));
-    // the soft step at its default 4 substeps, then the sequential impulses by iterations
-    QCOMPARE(rows[2].mid(0, 3), (QStringList{"resting-box", "soft-step", "4"}));
+    // the soft step at its default 5 substeps, then the sequential impulses by iterations
+    QCOMPARE(rows[2].mid(0, 3), (QStringList{"resting-box", "soft-step", "5"}));
     QCOMPARE(rows[3].mid(0, 3), (QStringList{"resting-box", "manifold", "1"}));
     QCOMPARE(rows[4].mid(0, 3), (QStringList{"resting-box", "manifold", "4"}));
     for (int i = 1; i < 5; ++i) {

@@ -30,6 +30,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <string>
+#include <utility>
 
 namespace rbw {
 
@@ -337,8 +339,11 @@ void ContactStudyPanel::redraw()
     chart_->addAxis(yAxis, Qt::AlignLeft);
 
     // One line per model and iteration count, through its step sizes, in cost order.
-    std::map<int, std::vector<std::pair<double, double>>> lines;   // iterations (0: course) -> (ms, error)
-    std::map<int, QString> names;
+    // (model, iterations (0: course)) -> (ms, error): the soft step's substeps may equal an
+    // iteration count of the sequential impulses, and they are two lines
+    using LineKey = std::pair<std::string, int>;
+    std::map<LineKey, std::vector<std::pair<double, double>>> lines;
+    std::map<LineKey, QString> names;
     double xmin = std::numeric_limits<double>::infinity(), xmax = 0.0;
     double ymin = std::numeric_limits<double>::infinity(), ymax = 0.0;
     int zeros = 0;
@@ -350,8 +355,8 @@ void ContactStudyPanel::redraw()
             ++zeros;   // 0 has no place on a log axis
             continue;
         }
-        lines[row.iterations].emplace_back(ms, *e);
-        names[row.iterations] = seriesName(row);
+        lines[{row.model, row.iterations}].emplace_back(ms, *e);
+        names[{row.model, row.iterations}] = seriesName(row);
         xmin = std::min(xmin, ms);
         xmax = std::max(xmax, ms);
         ymin = std::min(ymin, *e);
@@ -364,12 +369,12 @@ void ContactStudyPanel::redraw()
         setDecades(xAxis, xmin, xmax);
         setDecades(yAxis, ymin, ymax);
     }
-    for (auto& [iterations, points] : lines) {
+    for (auto& [key, points] : lines) {
         std::sort(points.begin(), points.end());
         auto* series = new QLineSeries;
-        series->setName(names[iterations]);
+        series->setName(names[key]);
         series->setPointsVisible(true);
-        if (iterations == 0) {
+        if (key.second == 0) {
             QPen pen(Qt::black);
             pen.setWidthF(2.0);
             pen.setStyle(Qt::DashLine);

@@ -48,15 +48,16 @@ private slots:
         QCOMPARE(defaults.positionFix, rbw::PositionFix::Ngs);
         const rbw::SceneLoadResult set = rbw::parseScene(
             sceneJson(QStringLiteral(
-                R"("contact_model": "manifold", "solver_iterations": 25, "sleep": false, "position_fix": "baumgarte",)")),
+                R"("contact_model": "manifold", "solver": "sequential-impulses", "solver_iterations": 25, "sleep": false, "position_fix": "baumgarte",)")),
             QStringLiteral("s.json"));
         QVERIFY(set.ok());
         const rbw::ManifoldSettings chosen = rbw::manifoldSettings(*set.scene);
         QCOMPARE(chosen.iterations, 25);
         QCOMPARE(chosen.sleep, false);
         QCOMPARE(chosen.positionFix, rbw::PositionFix::Baumgarte);
-        QCOMPARE(defaults.solver, rbw::ManifoldSolver::SequentialImpulses);
-        QCOMPARE(defaults.substeps, 4);
+        QCOMPARE(defaults.solver, rbw::ManifoldSolver::SoftStep);   // the default since issue 19
+        QCOMPARE(chosen.solver, rbw::ManifoldSolver::SequentialImpulses);
+        QCOMPARE(defaults.substeps, 5);
         const rbw::SceneLoadResult soft = rbw::parseScene(
             sceneJson(QStringLiteral(R"("contact_model": "manifold", "solver": "soft-step", "substeps": 6,)")),
             QStringLiteral("s.json"));
@@ -73,15 +74,15 @@ private slots:
         QTest::newRow("unknown model") << R"("contact_model": "manifolds",)"
                                        << R"(contact_model: must be "course" or "manifold", got "manifolds")";
         QTest::newRow("not a word") << R"("contact_model": 1,)" << "contact_model: must be a string, got a number";
-        QTest::newRow("iterations 0") << R"("contact_model": "manifold", "solver_iterations": 0,)"
+        QTest::newRow("iterations 0") << R"("contact_model": "manifold", "solver": "sequential-impulses", "solver_iterations": 0,)"
                                       << "solver_iterations: must be a whole number from 1 to 1000, got 0";
-        QTest::newRow("iterations too many") << R"("contact_model": "manifold", "solver_iterations": 5000,)"
+        QTest::newRow("iterations too many") << R"("contact_model": "manifold", "solver": "sequential-impulses", "solver_iterations": 5000,)"
                                              << "solver_iterations: must be a whole number from 1 to 1000, got 5000";
-        QTest::newRow("iterations not whole") << R"("contact_model": "manifold", "solver_iterations": 2.5,)"
+        QTest::newRow("iterations not whole") << R"("contact_model": "manifold", "solver": "sequential-impulses", "solver_iterations": 2.5,)"
                                               << "solver_iterations: must be a whole number, got 2.5";
         QTest::newRow("sleep not a bool") << R"("contact_model": "manifold", "sleep": "yes",)"
                                           << "sleep: must be true or false, got a string";
-        QTest::newRow("unknown fix") << R"("contact_model": "manifold", "position_fix": "split",)"
+        QTest::newRow("unknown fix") << R"("contact_model": "manifold", "solver": "sequential-impulses", "position_fix": "split",)"
                                      << R"(position_fix: must be "ngs", "baumgarte" or "none", got "split")";
         QTest::newRow("iterations in the course model") << R"("solver_iterations": 20,)"
             << R"(solver_iterations: the key belongs to the manifold model; add "contact_model": "manifold" or leave it out)";
@@ -98,8 +99,13 @@ private slots:
                                         << R"(solver: must be "sequential-impulses" or "soft-step", got "soft")";
         QTest::newRow("substeps 0") << R"("contact_model": "manifold", "solver": "soft-step", "substeps": 0,)"
                                     << "substeps: must be a whole number from 1 to 64, got 0";
-        QTest::newRow("substeps without the soft step") << R"("contact_model": "manifold", "substeps": 4,)"
-                                                        << R"(substeps: belongs to the soft step; add "solver": "soft-step")";
+        QTest::newRow("substeps with the sequential impulses")
+            << R"("contact_model": "manifold", "solver": "sequential-impulses", "substeps": 4,)"
+            << R"(substeps: belongs to the soft step; add "solver": "soft-step")";
+        QTest::newRow("iterations without a solver (the soft step by default)")
+            << R"("contact_model": "manifold", "solver_iterations": 10,)"
+            << R"(solver_iterations: belongs to the sequential impulses; the soft step (the manifold model's default )"
+               R"(solver) iterates once per substep ("substeps"); add "solver": "sequential-impulses" to use it)";
         QTest::newRow("position fix with the soft step")
             << R"("contact_model": "manifold", "solver": "soft-step", "position_fix": "ngs",)"
             << "position_fix: belongs to the sequential impulses; the soft step pushes overlap out inside its substeps";
@@ -154,7 +160,8 @@ private slots:
     void traceRows()
     {
         const rbw::SceneLoadResult r =
-            rbw::parseScene(sceneJson(QStringLiteral(R"("contact_model": "manifold",)")), QStringLiteral("s.json"));
+            rbw::parseScene(sceneJson(QStringLiteral(R"("contact_model": "manifold", "solver": "sequential-impulses",)")),
+                            QStringLiteral("s.json"));
         rbw::World w(*r.scene);
         rbw::StepTrace t;
         for (int k = 0; k < 20 && t.contacts.empty(); ++k) w.step(&t);

@@ -137,8 +137,11 @@ QString tracesDifference(const std::vector<StepTrace>& expected, const std::vect
 SceneDef sceneOf(const QString& which)
 {
     if (which == QLatin1String("rain")) {
-        // 100 unit boxes falling in one 10 x 10 layer from 3 m (contact_problems.h), sleeping on
-        return lab::contactProblemScene(lab::ContactProblem::Rain, ContactModel::Manifold, 100);
+        // 100 unit boxes falling in one 10 x 10 layer from 3 m (contact_problems.h), sleeping
+        // on, with the sequential impulses (the default is the soft step, the next row)
+        SceneDef s = lab::contactProblemScene(lab::ContactProblem::Rain, ContactModel::Manifold, 100);
+        s.solver = ManifoldSolver::SequentialImpulses;
+        return s;
     }
     if (which == QLatin1String("soft rain")) {
         // the same with the soft step: it carries its last substep's impulses to the next step

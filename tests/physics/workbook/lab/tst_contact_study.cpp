@@ -153,10 +153,10 @@ void TestContactStudy::rowsInOrder()
     QCOMPARE(r.runsPlanned, 8);
     QCOMPARE(r.rows.size(), size_t(8));
     QCOMPARE(calls, 8);
-    // course at each h, the soft step (its 4 substeps) at each h, then the sequential
+    // course at each h, the soft step (its 5 substeps) at each h, then the sequential
     // impulses by iterations, each at each h: three solvers
     const char* models[] = {"course", "course", "soft-step", "soft-step", "manifold", "manifold", "manifold", "manifold"};
-    const int iterations[] = {0, 0, 4, 4, 1, 1, 4, 4};
+    const int iterations[] = {0, 0, 5, 5, 1, 1, 4, 4};
     const long steps[] = {30, 15, 30, 15, 30, 15, 30, 15};   // T/h = 0.5 * 60, 0.5 * 30
     for (int i = 0; i < 8; ++i) {
         QCOMPARE(QString::fromStdString(r.rows[i].model), QString::fromLatin1(models[i]));
