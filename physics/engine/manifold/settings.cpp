@@ -54,7 +54,10 @@ void checkContactModel(std::vector<SceneIssue>& out, const SceneDef& scene)
         // The soft step has its own iterations (one solve and one relax per substep) and
         // its own position correction (the push-out inside the substeps).
         const std::string which = scene.solver ? "" : " (the manifold model's default solver)";
-        const std::string hint = scene.solver ? "" : "; add \"solver\": \"sequential-impulses\" to use it";
+        const std::string hint = scene.solver ? ""
+                                              : "; add \"solver\": \"" +
+                                                    std::string(sceneWord(ManifoldSolver::SequentialImpulses)) +
+                                                    "\" to use it";
         if (scene.solverIterations) {
             out.push_back({"solver_iterations", "belongs to the sequential impulses; the soft step" + which +
                                                     " iterates once per substep (\"substeps\")" + hint});
