@@ -143,6 +143,7 @@ QJsonObject diagnoseJson(const DiagnoseRun& run)
     doc["verdict"] = QString::fromLatin1(probes::verdictName(d.verdict));
     doc["mistakes"] = jsonStrings(d.mistakes);
     doc["possible_mistakes"] = jsonStrings(d.possibleMistakes);
+    doc["possible_explanations"] = jsonStrings(d.possibleExplanations);   // "a", or a pair "a + b"
     QJsonArray details;
     for (const std::vector<std::string>* ids : {&d.mistakes, &d.possibleMistakes}) {
         for (const std::string& id : *ids) {
@@ -205,9 +206,14 @@ void writeDiagnoseText(QTextStream& out, const DiagnoseRun& run)
         if (m == nullptr) return;
         out << "  " << m->id << ": " << m->equation << '\n' << "    " << m->explanation << '\n';
     };
-    if (!d.mistakes.empty()) out << "mistake:\n";
+    if (d.mistakes.size() == 1) out << "mistake:\n";
+    if (d.mistakes.size() > 1) out << "mistakes (the two together explain your answers):\n";
     for (const std::string& id : d.mistakes) describe(id);
-    if (!d.possibleMistakes.empty()) out << "possible mistakes (each explains your answers equally well):\n";
+    if (!d.possibleMistakes.empty()) {
+        QStringList each;
+        for (const std::string& e : d.possibleExplanations) each << QString::fromStdString(e);
+        out << "possible mistakes (each of " << each.join("; ") << " explains your answers equally well):\n";
+    }
     for (const std::string& id : d.possibleMistakes) describe(id);
     for (const probes::RestitutionOf& r : d.restitution) {
         out << "restitution fitted to your collision answers: c = " << QString::number(r.c, 'g', 6) << " ("

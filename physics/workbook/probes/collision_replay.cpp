@@ -14,7 +14,7 @@ namespace rbw::probes {
 namespace {
 
 // The impulse between A = bodies[i] and B = bodies[j], if they touch.
-void collide(SimBody& A, SimBody& B, double c, Mistake m)
+void collide(SimBody& A, SimBody& B, double c, const MistakeSet& m)
 {
     const BoxPose boxA{A.x_W, A.r_WB.toRotationMatrix(), 0.5 * A.size};
     const BoxPose boxB{B.x_W, B.r_WB.toRotationMatrix(), 0.5 * B.size};
@@ -37,7 +37,7 @@ void collide(SimBody& A, SimBody& B, double c, Mistake m)
     in.invM_B = 1.0 / B.mass;
     const HandImpulse k = handImpulse(in, m);
     // the simulator's own separating test on its own v_rel.n
-    if (k.v_rel_n > 0.0 && m != Mistake::NoSeparatingCheck) return;
+    if (k.v_rel_n > 0.0 && !m.has(Mistake::NoSeparatingCheck)) return;
     const double J = k.numerator / k.denominator;
     const Vec3 Jn_W = J * contact->n_W;
     A.v_W += Jn_W / A.mass;
@@ -62,10 +62,19 @@ std::vector<ReplayModel> collisionModels()
 
 Answers replayWithContacts(const Probe& probe, const ReplayModel& model, double c)
 {
-    const bool inStep = scopeOf(model.mistake) == ProbeScope::Motion;
-    const Mistake stepMistake = inStep ? model.mistake : Mistake::None;
-    const ReplayModel stepModel{stepMistake, model.variant};
-    const Mistake impulseMistake = scopeOf(model.mistake) == ProbeScope::Collision ? model.mistake : Mistake::None;
+    // A motion model changes the step, a collision model the impulse; a pair may have one
+    // of each (or two of one kind).
+    ReplayModel stepModel{Mistake::None, model.variant};
+    MistakeSet impulseMistakes{Mistake::None, Mistake::None, model.variant};
+    for (Mistake m : {model.mistake, model.second}) {
+        if (scopeOf(m) == ProbeScope::Motion) {
+            Mistake& slot = stepModel.mistake == Mistake::None ? stepModel.mistake : stepModel.second;
+            slot = m;
+        } else if (scopeOf(m) == ProbeScope::Collision) {
+            Mistake& slot = impulseMistakes.first == Mistake::None ? impulseMistakes.first : impulseMistakes.second;
+            slot = m;
+        }
+    }
     std::vector<SimBody> bodies;
     Answers answers;
     for (const Command& cmd : probe.commands) {
@@ -86,7 +95,7 @@ Answers replayWithContacts(const Probe& probe, const ReplayModel& model, double 
         case CommandKind::Step:
             for (SimBody& b : bodies) stepSimBody(b, cmd.h, stepModel);
             for (std::size_t i = 0; i < bodies.size(); ++i) {
-                for (std::size_t j = i + 1; j < bodies.size(); ++j) collide(bodies[i], bodies[j], c, impulseMistake);
+                for (std::size_t j = i + 1; j < bodies.size(); ++j) collide(bodies[i], bodies[j], c, impulseMistakes);
             }
             break;
         case CommandKind::State: {

@@ -1,5 +1,5 @@
 // The workbook's side of a collision probe (issue 23): what a simulator that makes one
-// mistake (or none) answers when its bodies touch. After every step of every body
+// mistake, a pair of them (or none) answers when its bodies touch. After every step of every body
 // (the checker's handEulerStep(), chained as in replay.h) each pair i < j is tested
 // with the course template's box-box test (physics/engine/course/box_box_sat.h, A =
 // body i, B = body j) and a contact gets the checker's impulse handImpulse()

@@ -1,5 +1,8 @@
 #include "physics/workbook/probes/probe_models.h"
 
+#include <algorithm>
+#include <cstddef>
+
 namespace rbw::probes {
 
 const std::vector<ScopedMistake>& mistakeScopes()
@@ -65,6 +68,40 @@ std::vector<ReplayModel> motionModels()
         for (int v = 0; v < info.variants; ++v) models.push_back({info.mistake, v});
     }
     return models;
+}
+
+Mistake sameSlotWinner(Mistake a, Mistake b)
+{
+    // Each slot's models in the order physics/workbook/checker/mistakes.cpp tests them:
+    // the first one present wins.
+    using M = Mistake;
+    static const std::vector<std::vector<Mistake>> slots = {
+        {M::BodyInverseInertia, M::InertiaNotInverted},   // angularVelocity(): omega = which matrix times L
+        {M::InertiaNotUpdated, M::InertiaAccumulatedRotation,
+         M::InertiaFromOldOrientation},                    // stepInverseInertia(): which world I^-1
+        {M::ImpulseWithoutOnePlus, M::RestitutionOneMinus},   // handImpulse(): the numerator's factor
+    };
+    for (const std::vector<Mistake>& slot : slots) {
+        const auto a_at = std::find(slot.begin(), slot.end(), a), b_at = std::find(slot.begin(), slot.end(), b);
+        if (a_at != slot.end() && b_at != slot.end() && a != b) return a_at < b_at ? a : b;
+    }
+    return Mistake::None;
+}
+
+std::vector<ReplayModel> modelPairs(const std::vector<ReplayModel>& singles)
+{
+    std::vector<ReplayModel> pairs;
+    for (std::size_t i = 0; i < singles.size(); ++i) {
+        for (std::size_t k = i + 1; k < singles.size(); ++k) {
+            const ReplayModel& a = singles[i];
+            const ReplayModel& b = singles[k];
+            if (a.isPair() || b.isPair() || a.mistake == Mistake::None || b.mistake == Mistake::None) continue;
+            if (a.mistake == b.mistake || sameSlotWinner(a.mistake, b.mistake) != Mistake::None) continue;
+            // the variant of whichever has variants (the other's is 0)
+            pairs.push_back(ReplayModel{a.mistake, std::max(a.variant, b.variant), b.mistake});
+        }
+    }
+    return pairs;
 }
 
 } // namespace rbw::probes

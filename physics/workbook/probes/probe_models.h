@@ -35,4 +35,16 @@ std::optional<ProbeScope> scopeOf(Mistake m);
 // catalogue's order (the right algorithm is not among them).
 std::vector<ReplayModel> motionModels();
 
+// Pairs of the single models `singles` (issue 23: "every mistake model and pair of them";
+// a student's code carries several, issue 21 item 1), each pair once, in the order of
+// `singles`. Left out, because they cannot matter: two variants of one model (a box's
+// I0 has one pair of axes swapped, MistakeSet one variant), and two models of the same
+// slot, where the step takes one of them and ignores the other (sameSlotWinner()), so the
+// pair replays exactly as that one model, which a diagnosis prefers anyway.
+std::vector<ReplayModel> modelPairs(const std::vector<ReplayModel>& singles);
+
+// For two models of the same slot, the one the hand calculation applies (the pair equals
+// it alone; tst_probes measures that); None when a and b combine.
+Mistake sameSlotWinner(Mistake a, Mistake b);
+
 } // namespace rbw::probes

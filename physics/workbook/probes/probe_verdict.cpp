@@ -1,10 +1,12 @@
 #include "physics/workbook/probes/probe_verdict.h"
 
 #include "physics/workbook/probes/collision_replay.h"
+#include "physics/workbook/probes/probe_models.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 namespace rbw::probes {
 
@@ -97,26 +99,45 @@ const char* verdictName(Verdict v)
 
 namespace {
 
-// The distinct ids of `models`, in their order.
-std::vector<std::string> idsOf(const std::vector<ReplayModel>& models)
+// One candidate replayed against the answers.
+struct Tried {
+    ReplayModel model;
+    bool all = false;                 // it reproduces every probe
+    int wrongReproduced = 0;          // probes it reproduces where the right algorithm does not
+    std::vector<std::size_t> probes;  // those probes
+    std::optional<double> fit;        // its fitted c
+};
+
+// The distinct ids (a pair's as "a + b") of `models`, in their order.
+std::vector<std::string> idsOf(const std::vector<Tried>& models)
 {
     std::vector<std::string> ids;
-    for (const ReplayModel& m : models) {
-        const std::string id = modelId(m);
+    for (const Tried& t : models) {
+        const std::string id = modelId(t.model);
         if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
     }
     return ids;
 }
 
-void name(SimulatorDiagnosis& d, const std::vector<ReplayModel>& best,
-          const std::vector<std::optional<double>>& fits, const std::vector<ReplayModel>& candidates)
+// One explanation: `mistakes` gets its ids (both of a pair); several: `possibleMistakes`
+// every id of them once and `possibleExplanations` each one.
+void name(SimulatorDiagnosis& d, const std::vector<Tried>& best)
 {
-    const std::vector<std::string> ids = idsOf(best);
-    if (ids.size() == 1) d.mistakes = ids;
-    else d.possibleMistakes = ids;
-    for (const ReplayModel& m : best) {
-        const std::size_t k = static_cast<std::size_t>(std::find(candidates.begin(), candidates.end(), m) - candidates.begin());
-        if (k < fits.size() && fits[k]) d.restitution.push_back({modelLabel(m), *fits[k]});
+    const std::vector<std::string> explanations = idsOf(best);
+    if (explanations.size() == 1) {
+        d.mistakes = modelIds(best.front().model);
+    } else {
+        d.possibleExplanations = explanations;
+        for (const Tried& t : best) {
+            for (const std::string& id : modelIds(t.model)) {
+                if (std::find(d.possibleMistakes.begin(), d.possibleMistakes.end(), id) == d.possibleMistakes.end()) {
+                    d.possibleMistakes.push_back(id);
+                }
+            }
+        }
+    }
+    for (const Tried& t : best) {
+        if (t.fit) d.restitution.push_back({modelLabel(t.model), *t.fit});
     }
 }
 
@@ -161,39 +182,68 @@ SimulatorDiagnosis diagnoseAnswers(const std::vector<Probe>& probes, const std::
     }
 
     // Per candidate: does it reproduce every probe, and how many of the wrong ones.
-    std::vector<ReplayModel> full;
-    std::vector<ReplayModel> best;
-    int bestCount = 0;
-    std::vector<std::optional<double>> fits;
-    for (const ReplayModel& m : candidates) {
-        bool all = true;
-        int wrongReproduced = 0;
-        fits.emplace_back();
-        const std::vector<Answers> expected = modelAnswers(probes, given, m, &fits.back());
-        for (std::size_t p = 0; p < n; ++p) {
-            const bool same = !firstDivergence(probes[p], expected[p], given[p]);
-            all = all && same;
-            if (same && !d.probes[p].matchesRight) {
-                ++wrongReproduced;
-                d.probes[p].reproducedBy.push_back(modelLabel(m));
+    auto tryAll = [&](const std::vector<ReplayModel>& models) {
+        std::vector<Tried> out;
+        for (const ReplayModel& m : models) {
+            Tried t{m, true, 0, {}, std::nullopt};
+            const std::vector<Answers> expected = modelAnswers(probes, given, m, &t.fit);
+            for (std::size_t p = 0; p < n; ++p) {
+                const bool same = !firstDivergence(probes[p], expected[p], given[p]);
+                t.all = t.all && same;
+                if (same && !d.probes[p].matchesRight) {
+                    ++t.wrongReproduced;
+                    t.probes.push_back(p);
+                }
             }
+            out.push_back(std::move(t));
         }
-        if (all) full.push_back(m);
-        if (wrongReproduced > bestCount) {
-            bestCount = wrongReproduced;
-            best.clear();
+        return out;
+    };
+    auto full = [](const std::vector<Tried>& tried) {
+        std::vector<Tried> out;
+        for (const Tried& t : tried) {
+            if (t.all) out.push_back(t);
         }
-        if (wrongReproduced == bestCount && wrongReproduced > 0) best.push_back(m);
+        return out;
+    };
+    // Occam: a single model first; pairs of them only when no single one explains every
+    // probe (a pair that explains them as well as a single model is never named).
+    std::vector<ReplayModel> singles, givenPairs;
+    for (const ReplayModel& m : candidates) (m.isPair() ? givenPairs : singles).push_back(m);
+    const std::vector<Tried> single = tryAll(singles);
+    std::vector<Tried> pairs;
+    std::vector<Tried> named = full(single);
+    if (named.empty()) {
+        std::vector<ReplayModel> pairModels = modelPairs(singles);
+        for (const ReplayModel& m : givenPairs) pairModels.push_back(m);
+        pairs = tryAll(pairModels);
+        named = full(pairs);
     }
-    if (!full.empty()) {
+    if (!named.empty()) {
         d.verdict = Verdict::Explained;
-        name(d, full, fits, candidates);
-    } else if (!best.empty()) {
-        d.verdict = Verdict::PartlyExplained;
-        name(d, best, fits, candidates);
     } else {
-        d.verdict = Verdict::Unexplained;
+        // the candidates that reproduce most of the wrong probes; a pair only when it
+        // reproduces more than every single model
+        int most = 0;
+        for (const Tried& t : single) most = std::max(most, t.wrongReproduced);
+        int mostOfPairs = 0;
+        for (const Tried& t : pairs) mostOfPairs = std::max(mostOfPairs, t.wrongReproduced);
+        const std::vector<Tried>& from = mostOfPairs > most ? pairs : single;
+        most = std::max(most, mostOfPairs);
+        for (const Tried& t : from) {
+            if (most > 0 && t.wrongReproduced == most) named.push_back(t);
+        }
+        d.verdict = named.empty() ? Verdict::Unexplained : Verdict::PartlyExplained;
     }
+    // Each probe's rows: the single models that reproduce it, and the named pairs.
+    for (const Tried& t : single) {
+        for (std::size_t p : t.probes) d.probes[p].reproducedBy.push_back(modelLabel(t.model));
+    }
+    for (const Tried& t : named) {
+        if (!t.model.isPair()) continue;
+        for (std::size_t p : t.probes) d.probes[p].reproducedBy.push_back(modelLabel(t.model));
+    }
+    if (!named.empty()) name(d, named);
     return d;
 }
 

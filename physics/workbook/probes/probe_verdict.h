@@ -44,7 +44,8 @@ const char* verdictName(Verdict v);   // "matches", "explained", "partly-explain
 struct ProbeOutcome {
     bool matchesRight = false;
     std::optional<Divergence> divergence;    // this probe's first divergence from the right algorithm
-    std::vector<std::string> reproducedBy;   // labels of the models that give these answers
+    std::vector<std::string> reproducedBy;   // labels of the single models that give these answers,
+                                             // and of the named pairs
 };
 
 // A fitted coefficient of restitution (collision probes) and the model it belongs to.
@@ -55,8 +56,9 @@ struct RestitutionOf {
 
 struct SimulatorDiagnosis {
     Verdict verdict = Verdict::Unexplained;
-    std::vector<std::string> mistakes;           // the one explanation's id
-    std::vector<std::string> possibleMistakes;   // ids, when several explain equally well
+    std::vector<std::string> mistakes;           // the one explanation's id (a pair: both ids)
+    std::vector<std::string> possibleMistakes;   // every id of them, when several explain equally well
+    std::vector<std::string> possibleExplanations;   // then each of them: "a", or a pair "a + b" (modelId)
     int divergenceProbe = -1;                    // index of the probe of firstDivergence, -1: none
     std::optional<Divergence> firstDivergence;   // against the right algorithm
     std::vector<ProbeOutcome> probes;            // one per probe
@@ -74,15 +76,21 @@ struct SimulatorDiagnosis {
 std::vector<Answers> modelAnswers(const std::vector<Probe>& probes, const std::vector<Answers>& given,
                                   const ReplayModel& model, std::optional<double>* restitution = nullptr);
 
-// `given[i]` holds the answers to probes[i]. Verdicts:
+// `given[i]` holds the answers to probes[i]; `candidates` are single models (a pair
+// among them is tried with the pairs). Verdicts:
 //   matches           the right algorithm reproduces every answer;
-//   explained         a candidate reproduces every answer of every probe;
+//   explained         a candidate, or a pair of two of them (modelPairs()), reproduces
+//                     every answer of every probe; pairs are tried only when no single
+//                     model does (Occam: a pair that explains as well as a single model
+//                     is never named);
 //   partly-explained  none does, but some reproduce the answers of a probe where the
 //                     right algorithm does not (the ones that do so for most probes are
-//                     named);
+//                     named; a pair only when it reproduces more probes than any single);
 //   unexplained       no candidate reproduces any probe where the answers are wrong.
-// Candidates that differ only in their variant count as one id. Probes that collide
-// are replayed with contacts and each candidate's own fitted c (modelAnswers).
+// Several explanations that do equally well are possibleExplanations (their ids in
+// possibleMistakes). Candidates that differ only in their variant count as one id.
+// Probes that collide are replayed with contacts and each candidate's own fitted c
+// (modelAnswers).
 SimulatorDiagnosis diagnoseAnswers(const std::vector<Probe>& probes, const std::vector<Answers>& given,
                                    const std::vector<ReplayModel>& candidates);
 

@@ -12,25 +12,53 @@ namespace rbw::probes {
 
 bool operator==(const ReplayModel& a, const ReplayModel& b)
 {
-    return a.mistake == b.mistake && a.variant == b.variant;
+    return a.mistake == b.mistake && a.variant == b.variant && a.second == b.second;
 }
 
-std::string modelId(const ReplayModel& model)
+namespace {
+
+std::string idOf(Mistake mistake)
 {
-    if (model.mistake == Mistake::None) return {};
     for (const MistakeInfo& m : mistakeCatalogue()) {
-        if (m.mistake == model.mistake) return m.id;
+        if (m.mistake == mistake) return m.id;
     }
     return "unknown-mistake";
 }
 
+std::string labelOf(Mistake mistake, int variant)
+{
+    std::string label = idOf(mistake);
+    if (mistake == Mistake::InertiaAxesSwapped) {
+        static const char* const axes[3] = {"x-y", "y-z", "x-z"};   // mistakes.cpp's variants
+        label += std::string(" (") + axes[variant % 3] + ")";
+    }
+    return label;
+}
+
+} // namespace
+
+std::vector<std::string> modelIds(const ReplayModel& model)
+{
+    std::vector<std::string> ids;
+    for (Mistake m : {model.mistake, model.second}) {
+        if (m != Mistake::None) ids.push_back(idOf(m));
+    }
+    return ids;
+}
+
+std::string modelId(const ReplayModel& model)
+{
+    std::string id;
+    for (const std::string& one : modelIds(model)) id += (id.empty() ? "" : " + ") + one;
+    return id;
+}
+
 std::string modelLabel(const ReplayModel& model)
 {
-    if (model.mistake == Mistake::None) return "the right algorithm";
-    std::string label = modelId(model);
-    if (model.mistake == Mistake::InertiaAxesSwapped) {
-        static const char* const axes[3] = {"x-y", "y-z", "x-z"};   // mistakes.cpp's variants
-        label += std::string(" (") + axes[model.variant % 3] + ")";
+    if (model.mistake == Mistake::None && model.second == Mistake::None) return "the right algorithm";
+    std::string label;
+    for (Mistake m : {model.mistake, model.second}) {
+        if (m != Mistake::None) label += (label.empty() ? "" : " + ") + labelOf(m, model.variant);
     }
     return label;
 }

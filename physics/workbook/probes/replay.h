@@ -1,5 +1,5 @@
-// The workbook's side of a probe (issue 23): what a simulator that makes one mistake
-// (or none) answers to each `state` question of a probe. It runs the probe's commands
+// The workbook's side of a probe (issue 23): what a simulator that makes one mistake,
+// two at once (a pair), or none answers to each `state` question of a probe. It runs the probe's commands
 // the way the course algorithm's simulator does (docs/simulator-protocol.md, "The
 // algorithm"; examples/simulator/README.md), and takes every step of every body from
 // the checker's hand calculation handEulerStep() (physics/workbook/checker/mistakes.h),
@@ -23,19 +23,30 @@ namespace rbw::probes {
 using Answer = std::vector<double>;    // 9 or 13 numbers
 using Answers = std::vector<Answer>;   // one per `state` command of a probe
 
-// A simulator the workbook can replay: the right algorithm (Mistake::None) or one
-// mistake model in one of its variants (MistakeInfo::variants).
+// A simulator the workbook can replay: the right algorithm (Mistake::None), one
+// mistake model in one of its variants (MistakeInfo::variants), or a pair of two
+// models made at once (`second`; students' code carries several, issue 21 item 1).
+// `variant` is that of whichever of the two has variants (only inertia-axes-swapped).
 struct ReplayModel {
     Mistake mistake = Mistake::None;
     int variant = 0;
+    Mistake second = Mistake::None;   // None: a single model
+
+    bool isPair() const { return mistake != Mistake::None && second != Mistake::None; }
+    bool has(Mistake m) const { return m != Mistake::None && (mistake == m || second == m); }
+    MistakeSet set() const { return MistakeSet{mistake, second, variant}; }
 };
 
 bool operator==(const ReplayModel& a, const ReplayModel& b);
 
-// "the right algorithm", "transposed-inertia", "inertia-axes-swapped (y-z)".
+// "the right algorithm", "transposed-inertia", "inertia-axes-swapped (y-z)",
+// "transposed-inertia + lever-arm-from-origin" (a pair: its two labels, catalogue order).
 std::string modelLabel(const ReplayModel& model);
-// The mistake's catalogue id ("" for the right algorithm): what rbw diagnose names.
+// The mistake's catalogue id ("" for the right algorithm), a pair's two ids joined by
+// " + ": what rbw diagnose names (without the variant).
 std::string modelId(const ReplayModel& model);
+// The catalogue ids one by one: none, one, or a pair's two.
+std::vector<std::string> modelIds(const ReplayModel& model);
 
 // The answers of a simulator with `model` to the probe's `state` commands.
 Answers replay(const Probe& probe, const ReplayModel& model);

@@ -9,9 +9,9 @@ SimulatorState newBodyState(const Vec3& size, double mass, const ReplayModel& mo
     BodyStepInputs in;
     in.size = size;
     in.mass = mass;
-    s.IinvStored_W = handEulerStep(in, model.mistake, model.variant).I0inv_B;
+    s.IinvStored_W = handEulerStep(in, model.set()).I0inv_B;
     // orientation-zero-quaternion: the body's r starts as (0, 0, 0, 0)
-    if (model.mistake == Mistake::OrientationZeroQuaternion) s.r0_WB = Quat(0.0, 0.0, 0.0, 0.0);
+    if (model.has(Mistake::OrientationZeroQuaternion)) s.r0_WB = Quat(0.0, 0.0, 0.0, 0.0);
     return s;
 }
 
@@ -35,10 +35,10 @@ namespace {
 
 // The inverse inertia the simulator stores after a step: the one its omega = Iinv_W L
 // uses (body-inverse-inertia: I0^-1; inertia-not-inverted: R I0 R^T).
-Mat3 storedInverseInertia(const HandEulerStep& s, Mistake m)
+Mat3 storedInverseInertia(const HandEulerStep& s, const ReplayModel& m)
 {
-    if (m == Mistake::BodyInverseInertia) return s.I0inv_B;
-    if (m == Mistake::InertiaNotInverted) return s.R_WB * s.I0_B * s.R_WB.transpose();
+    if (m.has(Mistake::BodyInverseInertia)) return s.I0inv_B;   // as angularVelocity() (mistakes.cpp) decides
+    if (m.has(Mistake::InertiaNotInverted)) return s.R_WB * s.I0_B * s.R_WB.transpose();
     return s.Iinv_W;
 }
 
@@ -69,13 +69,13 @@ void stepSimBody(SimBody& b, double h, const ReplayModel& model)
     in.firstStep = !b.stepped;
     in.omega_W = b.omega_W;   // the step starts from the simulator's own omega_n
     enterState(b.kept, in);
-    const HandEulerStep s = handEulerStep(in, model.mistake, model.variant);
+    const HandEulerStep s = handEulerStep(in, model.set());
     b.x_W = s.x_W;
     b.v_W = s.v_W;
     b.r_WB = s.q_WB;
     b.L_W = s.L_W;
     b.omega_W = s.omega_W;
-    b.Iinv_W = storedInverseInertia(s, model.mistake);
+    b.Iinv_W = storedInverseInertia(s, model);
     b.I0inv_B = s.I0inv_B;
     keepState(s, b.kept);
     b.forces.clear();   // the loads act for one step
