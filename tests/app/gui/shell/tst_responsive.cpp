@@ -33,6 +33,9 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
+#include <optional>
+
 using namespace rbw;
 
 namespace {
@@ -254,19 +257,26 @@ void TestResponsive::goToAFarStepThenCancel()
         QTRY_VERIFY_WITH_TIMEOUT(answered, 3000);
         QCOMPARE(w.world()->stepIndex(), 0L);
     }
-    // Released: the steps come in while the window answers.
-    QTRY_VERIFY_WITH_TIMEOUT(w.world()->stepIndex() >= 3, 120000);
-    QVERIFY(w.session()->busy());
+    // Released: the steps come in while the window answers. Once three steps are
+    // recorded, the next slice is held (it waits before its first step), so Cancel
+    // below certainly meets a run, whatever the machine's speed.
+    std::optional<StepRun::HoldForTest> holdNext;
+    connect(w.session(), &Session::runFinished, &w, [&] {
+        if (!holdNext && w.world()->stepIndex() >= 3) holdNext.emplace();
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(holdNext.has_value(), 120000);
+    QVERIFY(w.session()->busy());   // the next slice started, held
     bool answered = false;
     QTimer::singleShot(0, &w, [&] { answered = true; });
     QTRY_VERIFY_WITH_TIMEOUT(answered, 3000);
     w.historyScrubber()->sync();
-    QVERIFY2(scrubber->label()->text().startsWith("step "), qPrintable(scrubber->label()->text()));
+    QVERIFY(scrubber->label()->text().startsWith(QStringLiteral("step %1 of %1").arg(w.world()->stepIndex())));
     QTest::mouseClick(w.runBusyBar()->cancelButton(), Qt::LeftButton);
     QVERIFY(!w.session()->busy());
     QVERIFY(!w.runBusyBar()->isVisible());
     const long k = w.world()->stepIndex();
     QVERIFY(k >= 3 && k < 100000);
+    holdNext.reset();   // the abandoned slice computes alone now
     QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("Cancelled: the scene is at step %1").arg(k)),
              qPrintable(w.statusBar()->currentMessage()));
     QVERIFY(StepRun::waitForAll(120000));
@@ -278,12 +288,13 @@ void TestResponsive::goToAFarStepThenCancel()
     QVERIFY(sameSnapshot(w.world()->snapshot(), h.current().state));
     QCOMPARE(over.count(), 0);
     QVERIFY(!scrubber->note()->isVisible());
-    QCOMPARE(scrubber->label()->text(), QStringLiteral("step %1 of %1").arg(k));
-    // The recorded steps are the session's own steps.
+    QVERIFY(scrubber->label()->text().startsWith(QStringLiteral("step %1 of %1").arg(k)));   // "(from n)" once the budget drops steps
+    // The recorded steps are the session's own steps (the oldest kept one after step 3).
+    const long s = std::max(3L, h.firstStep());
     Session direct;
     direct.load(w.world()->scene());
-    for (int i = 0; i < 3; ++i) QVERIFY(direct.step());
-    QVERIFY(sameSnapshot(h.at(static_cast<std::size_t>(h.indexOfStep(3))).state, direct.world()->snapshot()));
+    for (long i = 0; i < s; ++i) QVERIFY(direct.step());
+    QVERIFY(sameSnapshot(h.at(static_cast<std::size_t>(h.indexOfStep(s))).state, direct.world()->snapshot()));
     // Left alone, a Go to arrives (from the event loop, the bar gone after it).
     scrubber->stepBox()->setValue(static_cast<int>(k + 2));
     QTest::mouseClick(scrubber->goButton(), Qt::LeftButton);
