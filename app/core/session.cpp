@@ -269,6 +269,66 @@ Session::RunStart Session::startRun(int maxSteps, double budgetMs, int waitMs)
     if (run_ || !world_ || !world_->status().ok || maxSteps < 1) {
         return RunStart::Refused;
     }
+    launchRun(maxSteps, budgetMs);
+    if (run_->waitFor(waitMs)) {
+        finishRun();
+        return RunStart::Finished;
+    }
+    setBusy(true);
+    return RunStart::Running;
+}
+
+Session::RunStart Session::startGoToStep(long k, int waitMs, long maxNewSteps)
+{
+    cancelRun();
+    if (!world_ || history_.empty() || k < history_.firstStep() || k <= history_.lastStep() ||
+        !world_->status().ok || maxNewSteps < 1) {
+        // Nothing to compute: the recorded history (restored at once), or refused.
+        const bool reached = goToStep(k, 0);
+        emit goToFinished(k, reached);
+        return RunStart::Finished;
+    }
+    goToStep(history_.lastStep(), 0);   // the recorded steps first, as goToStep passes them
+    goToTarget_ = k;
+    goToLeft_ = maxNewSteps;
+    QElapsedTimer waited;
+    waited.start();
+    continueGoTo();
+    // A light scene's steps finish within the wait, slice after slice, and nothing shows.
+    while (run_) {
+        const qint64 left = static_cast<qint64>(waitMs) - waited.elapsed();
+        if (left < 0 || !run_->waitFor(static_cast<int>(left))) break;
+        finishRun();   // records the slice, starts the next one or ends (goToFinished)
+    }
+    if (!run_) {
+        return RunStart::Finished;
+    }
+    setBusy(true);
+    return RunStart::Running;
+}
+
+bool Session::continueGoTo()
+{
+    const long k = goToTarget_;
+    if (k < 0) {
+        return false;
+    }
+    const long now = world_->stepIndex();
+    if (now < k && goToLeft_ > 0 && world_->status().ok) {
+        // A slice: at most what the history keeps, and about kGoToSliceMs of work, so
+        // its steps are recorded (and the views follow) before the next one starts.
+        const long most = std::min({k - now, goToLeft_, static_cast<long>(StepHistory::kDefaultCapacity) - 1});
+        launchRun(static_cast<int>(most), kGoToSliceMs);
+        return true;
+    }
+    goToTarget_ = -1;
+    goToLeft_ = 0;
+    emit goToFinished(k, now == k);
+    return false;
+}
+
+void Session::launchRun(int maxSteps, double budgetMs)
+{
     // The run steps a copy (a fresh world of the same scene, restored: bit for bit the
     // same steps), so this world stays at the last finished step for the views.
     auto copy = std::make_unique<World>(edited_);
@@ -284,22 +344,26 @@ Session::RunStart Session::startRun(int maxSteps, double budgetMs, int waitMs)
             },
             Qt::QueuedConnection);
     });
-    if (run_->waitFor(waitMs)) {
-        finishRun();
-        return RunStart::Finished;
+}
+
+void Session::setBusy(bool busy)
+{
+    if (busy != busySignalled_) {
+        busySignalled_ = busy;
+        emit busyChanged(busy);
     }
-    emit busyChanged(true);
-    return RunStart::Running;
 }
 
 void Session::cancelRun()
 {
+    goToTarget_ = -1;   // a Go to that is cancelled is not finished: no goToFinished
+    goToLeft_ = 0;
     if (!run_) {
         return;
     }
     run_->cancel();
     run_.reset();
-    emit busyChanged(false);
+    setBusy(false);
 }
 
 void Session::finishRun()
@@ -307,11 +371,16 @@ void Session::finishRun()
     const std::shared_ptr<StepRun> run = std::move(run_);
     run_.reset();
     StepRunResult r = run->take();
-    emit busyChanged(false);
+    const bool goingOn = goToTarget_ >= 0;   // a Go to's slice: busy until its last one
+    if (!goingOn) {
+        setBusy(false);
+    }
     if (!r.failure.empty()) {
         // Nothing was computed: the world stays at the last finished step.
+        goToLeft_ = 0;
         emit blownUp(QString::fromStdString("step " + std::to_string(world_->stepIndex()) + ": " + r.failure));
         emit runFinished(0);
+        if (goingOn && !continueGoTo()) setBusy(false);
         return;
     }
     const int taken = static_cast<int>(r.traces.size());
@@ -334,6 +403,11 @@ void Session::finishRun()
         emit stateChanged();
     }
     emit runFinished(taken);
+    if (goingOn) {
+        goToLeft_ -= taken;
+        // A handler above may have cancelled it (goToTarget_ is -1 then): it ends here.
+        if (goToTarget_ < 0 || !continueGoTo()) setBusy(false);
+    }
 }
 
 void Session::beginGrab(int body, const Vec3& p_W)

@@ -92,6 +92,19 @@ public:
     // step, exactly. Every call above that changes the world or the parameters (step,
     // advance, step back, go to step, reset, load, a parameter, K) cancels it first.
     void cancelRun();
+    // The history scrubber's Go (issue 22): goToStep(k, maxNewSteps), but the new steps
+    // beyond the recorded history are computed off the GUI thread, in runs of about
+    // kGoToSliceMs of work each, recorded as each run finishes (so the history keeps to
+    // its budget and the views follow), one run after another until step k, a blow-up
+    // or maxNewSteps new steps. Waits at most waitMs in all. Finished: it is over, and
+    // goToFinished(k, reached) has been emitted (also for a step in the recorded
+    // history, which is restored at once, or a refused k). Running: busy() until it is
+    // over, then goToFinished from the event loop; cancelRun() stops it at the last
+    // finished step and goToFinished is not emitted.
+    RunStart startGoToStep(long k, int waitMs, long maxNewSteps = 100000);
+    static constexpr double kGoToSliceMs = 100.0;
+    // The step startGoToStep's runs are going to, or -1 when none goes on.
+    long goToTarget() const { return goToTarget_; }
 
     // --- interaction ---
     // The mouse spring: grab a body at a world point, move the target, release.
@@ -135,6 +148,10 @@ signals:
     // A run of startRun finished and its `taken` steps are recorded (0 when it failed:
     // blownUp says why).
     void runFinished(int taken);
+    // startGoToStep's run is over: step k was reached, or not (a blow-up, the limit of
+    // new steps, a step before the oldest kept one; the world is at the last finished
+    // step). Not emitted when it was cancelled.
+    void goToFinished(long k, bool reached);
 
 private:
     bool rebuild(SceneDef edited, QString* error);
@@ -146,6 +163,11 @@ private:
     void applyInteraction(World& w) const;
     // Records the finished run's steps (startRun).
     void finishRun();
+    // Starts a run of a copy of the world (startRun, startGoToStep's slices).
+    void launchRun(int maxSteps, double budgetMs);
+    // The next slice of startGoToStep's run, or its end (goToFinished): false at the end.
+    bool continueGoTo();
+    void setBusy(bool busy);
 
     SceneDef base_;     // as loaded from the lesson
     SceneDef edited_;   // with the student's parameters
@@ -159,6 +181,9 @@ private:
     std::shared_ptr<StepRun> run_;   // the run being computed (startRun), or none
     std::size_t runPushes_ = 0;      // the pushes its first step applies
     quint64 runSerial_ = 0;          // which run a queued "finished" is about
+    bool busySignalled_ = false;     // busyChanged(true) was the last said
+    long goToTarget_ = -1;           // startGoToStep's step k while its runs go on, else -1
+    long goToLeft_ = 0;              // the new steps it may still take
 };
 
 } // namespace rbw

@@ -150,6 +150,7 @@ MainWindow::MainWindow(QWidget* parent)
     });
     connect(&session_, &Session::stateChanged, this, &MainWindow::onStateChanged);
     connect(&session_, &Session::runFinished, this, &MainWindow::onRunFinished);
+    connect(&session_, &Session::goToFinished, this, &MainWindow::onGoToFinished);
     connect(busyBar_, &RunBusyBar::cancelled, this, [this](long k) {
         setPlaying(false);
         statusBar()->showMessage(tr("Cancelled: the scene is at step %1, the last finished step").arg(k), 6000);
@@ -382,14 +383,21 @@ bool MainWindow::goToStep(long k)
 {
     setPlaying(false);
     if (!session_.isLoaded()) return false;
-    if (k == session_.world()->stepIndex()) {
+    if (k == session_.world()->stepIndex() && !session_.busy()) {
         // Already there: Enter in the step box still gives the keys back.
         if (scrubber_->isAncestorOf(QApplication::focusWidget())) sceneView_->setFocus(Qt::OtherFocusReason);
         return true;
     }
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    const bool reached = session_.goToStep(k);
-    QApplication::restoreOverrideCursor();
+    // The newer request wins: a step still computing (Play's, an earlier Go) is dropped
+    // first. Beyond the recording, off the GUI thread (goToFinished says how it ended).
+    session_.startGoToStep(k, busyBar_->goWaitMs());
+    // After Go (or Enter in the step box) the keys step and play again.
+    if (scrubber_->isAncestorOf(QApplication::focusWidget())) sceneView_->setFocus(Qt::OtherFocusReason);
+    return !session_.busy() && session_.world()->stepIndex() == k;
+}
+
+void MainWindow::onGoToFinished(long k, bool reached)
+{
     if (reached) {
         alertLabel_->setVisible(!session_.status().ok);
     } else if (k < session_.history().firstStep()) {   // said beside the slider, where it was asked
@@ -399,9 +407,6 @@ bool MainWindow::goToStep(long k)
         scrubber_->showNote(tr("Step %1 not reached: the run stopped at step %2").arg(k).arg(session_.history().current().state.stepIndex));
     }
     scrubber_->sync();
-    // After Go (or Enter in the step box) the keys step and play again.
-    if (scrubber_->isAncestorOf(QApplication::focusWidget())) sceneView_->setFocus(Qt::OtherFocusReason);
-    return reached;
 }
 
 void MainWindow::setPlaying(bool playing)

@@ -106,8 +106,11 @@ public:
 public slots:
     void stepOnce();
     void stepBack();
-    // The history scrubber's "go to step k" (stops playing first); false if k is not
-    // recorded and cannot be reached (see Session::goToStep).
+    // The history scrubber's "go to step k" (stops playing first). A recorded step is
+    // restored at once; new steps beyond the recording are computed off the GUI thread
+    // (Session::startGoToStep: the busy bar with Cancel once it takes longer than the
+    // bar's wait). True if step k is current on return; false if it is not reached
+    // (said beside the slider) or still being computed.
     bool goToStep(long k);
     void setPlaying(bool playing);
     void resetLesson();
@@ -139,6 +142,7 @@ private:
     void onStateChanged();
     void onPlayTick();
     void onRunFinished(int taken);
+    void onGoToFinished(long k, bool reached);
     void updateStatus();
     void updateCheckPanel();
 

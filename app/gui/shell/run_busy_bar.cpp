@@ -41,10 +41,11 @@ RunBusyBar::RunBusyBar(Session* session, QWidget* parent)
     hide();
 }
 
-void RunBusyBar::setWaitMs(int stepWaitMs, int playWaitMs)
+void RunBusyBar::setWaitMs(int stepWaitMs, int playWaitMs, int goWaitMs)
 {
     stepWaitMs_ = stepWaitMs;
     playWaitMs_ = playWaitMs;
+    goWaitMs_ = goWaitMs >= 0 ? goWaitMs : stepWaitMs;
 }
 
 void RunBusyBar::cancel()
@@ -71,9 +72,18 @@ void RunBusyBar::updateText()
 {
     const World* world = session_->world();
     const long k = world != nullptr ? world->stepIndex() : 0;
-    label_->setText(tr("Computing the next step … %1 s (the scene shows step %2, the last one finished)")
-                        .arg(static_cast<double>(since_.elapsed()) * 1e-3, 0, 'f', 1)
-                        .arg(k));
+    const double seconds = static_cast<double>(since_.elapsed()) * 1e-3;
+    const long target = session_->goToTarget();
+    if (target >= 0) {
+        label_->setText(tr("Going to step %1 … %2 s (the scene shows step %3, the last one finished)")
+                            .arg(target)
+                            .arg(seconds, 0, 'f', 1)
+                            .arg(k));
+    } else {
+        label_->setText(tr("Computing the next step … %1 s (the scene shows step %2, the last one finished)")
+                            .arg(seconds, 0, 'f', 1)
+                            .arg(k));
+    }
     label_->setToolTip(label_->text());
 }
 

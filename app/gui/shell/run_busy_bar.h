@@ -2,7 +2,8 @@
 // app/core/step_run.h): under the 3D view, "Computing step k … 2.4 s" with a running
 // bar and Cancel. It shows only while the session is busy, which happens only when a
 // step (or a tick's batch of Play) takes longer than the window waits for it; the
-// window, its menus, the history and Quit answer meanwhile.
+// window, its menus, the history and Quit answer meanwhile. A Go to step beyond the
+// recording shows "Going to step k …" and the step it has reached so far.
 //
 // Cancel drops the run: the world stays at the last finished step, exactly (the run
 // stepped a copy of it). The window connects cancelled() to stop playing.
@@ -30,7 +31,11 @@ public:
     // microseconds and are recorded at once). Tests set 0: every run is then busy.
     int stepWaitMs() const { return stepWaitMs_; }
     int playWaitMs() const { return playWaitMs_; }
-    void setWaitMs(int stepWaitMs, int playWaitMs);
+    // Go to a step beyond the recording (Session::startGoToStep) waits a little longer:
+    // it asks for many steps at once, and a light scene's hundreds take a blink.
+    int goWaitMs() const { return goWaitMs_; }
+    // Sets the three waits (Go to waits as Step, unless given).
+    void setWaitMs(int stepWaitMs, int playWaitMs, int goWaitMs = -1);
 
     QLabel* label() const { return label_; }
     QPushButton* cancelButton() const { return cancelButton_; }
@@ -55,6 +60,7 @@ private:
     QElapsedTimer since_;
     int stepWaitMs_ = 200;
     int playWaitMs_ = 50;
+    int goWaitMs_ = 500;
 };
 
 } // namespace rbw

@@ -122,6 +122,24 @@ Outcome runCase(const QJsonObject& c, const QByteArray& base, QTemporaryDir& dir
         if (!f.open(QIODevice::WriteOnly)) qFatal("cannot write %s", qPrintable(scene));
         f.write(text);
     }
+    // "exercise": edits of lesson 1's exercise.json, written to {dir}/exercise.json
+    // beside the scene, so {dir} is a lesson for rbw exercise (issue 22's holes).
+    if (c.contains(QStringLiteral("exercise"))) {
+        QFile in(QStringLiteral(RBW_SOURCE_DIR "/lessons/01-one-step/exercise.json"));
+        if (!in.open(QIODevice::ReadOnly)) qFatal("cannot read lesson 1's exercise.json");
+        QByteArray text = in.readAll();
+        for (const QJsonValue& r : c.value(QStringLiteral("exercise")).toArray()) {
+            const QByteArray from = r.toArray().at(0).toString().toUtf8();
+            if (!text.contains(from)) {
+                o.problem = QStringLiteral("lesson 1's exercise.json has no \"%1\"").arg(QString::fromUtf8(from));
+                return o;
+            }
+            text.replace(from, r.toArray().at(1).toString().toUtf8());
+        }
+        QFile f(QFileInfo(scene).path() + QStringLiteral("/exercise.json"));
+        if (!f.open(QIODevice::WriteOnly)) qFatal("cannot write exercise.json");
+        f.write(text);
+    }
     // "answers": the text of {dir}/answers.json, an answers file for rbw check.
     if (c.contains(QStringLiteral("answers"))) {
         QFile f(QFileInfo(scene).path() + QStringLiteral("/answers.json"));

@@ -24,6 +24,35 @@ const char* kRight = R"({ "step": 0, "answers": [
   { "quantity": "angular_velocity", "body": "box", "value": [-2.4, 4.918, -1.765] } ] })";
 
 // x with the new v; omega with I0^-1 (the body frame).
+// RFC 4180: fields split by commas, a quoted field may hold commas, line breaks and
+// doubled quotes. The CSV's records, each its fields.
+QList<QStringList> parseCsv(const QString& text)
+{
+    QList<QStringList> records;
+    QStringList fields;
+    QString field;
+    bool quoted = false;
+    for (qsizetype i = 0; i < text.size(); ++i) {
+        const QChar c = text[i];
+        if (quoted) {
+            if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') field += '"', ++i;
+            else if (c == '"') quoted = false;
+            else field += c;
+        } else if (c == '"') {
+            quoted = true;
+        } else if (c == ',') {
+            fields << field, field.clear();
+        } else if (c == '\n') {
+            fields << field, field.clear();
+            records << fields, fields.clear();
+        } else {
+            field += c;
+        }
+    }
+    if (!field.isEmpty() || !fields.isEmpty()) records << (fields << field);
+    return records;
+}
+
 const char* kWrong = R"({ "step": 0, "answers": [
   { "quantity": "position", "body": "box", "value": [2, 2, 0] },
   { "quantity": "angular_velocity", "body": "box", "value": [-4.918, 2.4, -1.765] } ] })";
@@ -108,6 +137,54 @@ private slots:
         QCOMPARE(QString::fromUtf8(r.out).count(quoted), 4);
         const rbw::test::RbwRun plain = rbw::test::runRbw({"check", kScene, write("plain.json", kRight), "--format", "csv"});
         QCOMPARE(QString::fromUtf8(plain.out).count(dir_.filePath("plain.json") + QStringLiteral(",0,")), 4);
+    }
+
+    // A body's name with a line break, a comma or quotes is one quoted field (issue 22,
+    // "CSV always quoted"): the marking sheet reads back (RFC 4180) as a header and one
+    // record of 12 fields whose body is the name exactly. Control: a plain name is
+    // written bare.
+    void csvQuotesBodyNames_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::newRow("line break") << QStringLiteral("box\nsecond line");
+        QTest::newRow("comma") << QStringLiteral("box, the first");
+        QTest::newRow("quotes") << QStringLiteral("the \"box\"");
+        QTest::newRow("all three") << QStringLiteral("a,\"b\"\r\nc");
+        QTest::newRow("plain (control)") << QStringLiteral("box");
+    }
+    void csvQuotesBodyNames()
+    {
+        QFETCH(QString, name);
+        QFile lesson(kScene);
+        QVERIFY(lesson.open(QIODevice::ReadOnly));
+        QJsonObject scene = QJsonDocument::fromJson(lesson.readAll()).object();
+        const auto rename = [&](const char* key) {
+            QJsonArray list = scene.value(key).toArray();
+            for (qsizetype i = 0; i < list.size(); ++i) {
+                QJsonObject o = list[i].toObject();
+                o[key == QByteArray("bodies") ? "name" : "body"] = name;
+                list[i] = o;
+            }
+            scene[key] = list;
+        };
+        rename("bodies");
+        rename("forces");
+        rename("probes");
+        const QString scenePath = write(QStringLiteral("named.json"), QJsonDocument(scene).toJson());
+        const QJsonObject answer{{"quantity", "torque"}, {"body", name}, {"value", QJsonArray{-0.25, 0.25, -0.2}}};
+        const QString answers = write(QStringLiteral("named-answers.json"),
+                                      QJsonDocument(QJsonObject{{"step", 0}, {"answers", QJsonArray{answer}}}).toJson());
+        const rbw::test::RbwRun r = rbw::test::runRbw({"check", scenePath, answers, "--format", "csv"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QList<QStringList> records = parseCsv(QString::fromUtf8(r.out));
+        QCOMPARE(records.size(), 2);
+        QCOMPARE(records[0].size(), 12);
+        QCOMPARE(records[0][3], QStringLiteral("body"));
+        QCOMPARE(records[1].size(), 12);
+        QCOMPARE(records[1][3], name);
+        QCOMPARE(records[1][2], QStringLiteral("torque"));
+        const bool needsQuotes = name.contains(',') || name.contains('"') || name.contains('\n') || name.contains('\r');
+        QCOMPARE(QString::fromUtf8(r.out).contains(QStringLiteral(",torque,") + name + QStringLiteral(",")), !needsQuotes);
     }
 
     void badAnswers_data()

@@ -82,6 +82,9 @@ private slots:
     void cancelLeavesTheLastFinishedStep();
     void cancelledRunKeepsItsPushes();
     void everyChangeCancelsTheRun();
+    void goToRecordsWhatGoToStepRecords();
+    void goToOnAPileLeavesTheEventLoopFree();
+    void goToCancelledIsNeverFinished();
 };
 
 void TestSessionRun::runRecordsWhatStepRecords_data()
@@ -262,6 +265,108 @@ void TestSessionRun::everyChangeCancelsTheRun()
         QVERIFY2(session.world()->stepIndex() <= k + 1, what);
         QCOMPARE(session.history().lastStep(), session.world()->stepIndex());
     }
+}
+
+// Go to a step beyond the recording, off the GUI thread (Session::startGoToStep):
+// lesson 4, 600 steps with collisions, recorded exactly as goToStep(600) records them
+// (every state bitwise, one stepRecorded per step), and goToFinished(600, true) once.
+// A generous wait: it finishes within it, in slices, and is over on return.
+void TestSessionRun::goToRecordsWhatGoToStepRecords()
+{
+    const SceneDef def = lessonScene("04-many-boxes/scene.json");
+    Session direct;
+    direct.load(def);
+    QVERIFY(direct.goToStep(600));
+    Session threaded;
+    threaded.load(def);
+    QSignalSpy recorded(&threaded, &Session::stepRecorded);
+    QSignalSpy over(&threaded, &Session::goToFinished);
+    QSignalSpy busy(&threaded, &Session::busyChanged);
+    QCOMPARE(threaded.startGoToStep(600, 60000), Session::RunStart::Finished);
+    QVERIFY(!threaded.busy());
+    QCOMPARE(busy.count(), 0);   // over within the wait: the busy bar never showed
+    QCOMPARE(over.count(), 1);
+    QCOMPARE(over.first().at(0).toLongLong(), 600LL);
+    QCOMPARE(over.first().at(1).toBool(), true);
+    QCOMPARE(recorded.count(), 600);
+    QCOMPARE(threaded.goToTarget(), -1L);
+    QCOMPARE(threaded.history().size(), direct.history().size());
+    for (std::size_t i = 0; i < direct.history().size(); ++i) {
+        QVERIFY2(sameSnapshot(threaded.history().at(i).state, direct.history().at(i).state), qPrintable(QString::number(i)));
+    }
+    // Back into the recording: restored at once, no run, goToFinished all the same.
+    QCOMPARE(threaded.startGoToStep(250, 0), Session::RunStart::Finished);
+    QCOMPARE(threaded.world()->stepIndex(), 250L);
+    QCOMPARE(over.count(), 2);
+    QCOMPARE(recorded.count(), 600);
+    // The limit of new steps: stops there, not reached (the world at the last step taken).
+    QCOMPARE(threaded.startGoToStep(5000, 60000, 50), Session::RunStart::Finished);
+    QCOMPARE(over.count(), 3);
+    QCOMPARE(over.last().at(1).toBool(), false);
+    QCOMPARE(threaded.world()->stepIndex(), 650L);   // 600 recorded, then 50 new
+    QCOMPARE(threaded.history().lastStep(), 650L);
+}
+
+// The heavy pile: Go to step 3 with the first step held, so it certainly runs. The
+// session is busy, says where it goes, the event loop turns; released, the steps are
+// recorded from the event loop, the same as three direct steps, bit for bit.
+void TestSessionRun::goToOnAPileLeavesTheEventLoopFree()
+{
+    Session session;
+    session.load(coincidentPile(kPile));
+    QSignalSpy over(&session, &Session::goToFinished);
+    QSignalSpy busy(&session, &Session::busyChanged);
+    {
+        const StepRun::HoldForTest hold;
+        QCOMPARE(session.startGoToStep(3, 0), Session::RunStart::Running);
+        QVERIFY(session.busy());
+        QCOMPARE(session.goToTarget(), 3L);
+        QCOMPARE(session.startRun(1, 0.0, 0), Session::RunStart::Refused);   // one run at a time
+        bool timerFired = false;
+        QTimer::singleShot(0, &session, [&] { timerFired = true; });
+        QTRY_VERIFY_WITH_TIMEOUT(timerFired, 5000);
+        QCOMPARE(over.count(), 0);
+        QCOMPARE(session.world()->stepIndex(), 0L);
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(!session.busy(), 120000);
+    QCOMPARE(over.count(), 1);
+    QCOMPARE(over.first().at(1).toBool(), true);
+    // busy once, idle once: the slices in between never hid the bar
+    QCOMPARE(busy.count(), 2);
+    QCOMPARE(session.world()->stepIndex(), 3L);
+    QCOMPARE(session.history().lastStep(), 3L);
+    Session direct;
+    direct.load(coincidentPile(kPile));
+    for (int i = 0; i < 3; ++i) QVERIFY(direct.step());
+    for (std::size_t i = 0; i < direct.history().size(); ++i) {
+        QVERIFY2(sameSnapshot(session.history().at(i).state, direct.history().at(i).state), qPrintable(QString::number(i)));
+    }
+}
+
+// Cancel of a Go to: the world stays at the last finished step, goToFinished never
+// comes (not even when the abandoned thread ends), and nothing more is recorded.
+void TestSessionRun::goToCancelledIsNeverFinished()
+{
+    Session session;
+    session.load(coincidentPile(kPile));
+    QVERIFY(session.step());
+    const WorldSnapshot atOne = session.world()->snapshot();
+    QSignalSpy over(&session, &Session::goToFinished);
+    QSignalSpy recorded(&session, &Session::stepRecorded);
+    {
+        const StepRun::HoldForTest hold;
+        QCOMPARE(session.startGoToStep(50, 0), Session::RunStart::Running);
+        session.cancelRun();
+        QVERIFY(!session.busy());
+        QCOMPARE(session.goToTarget(), -1L);
+    }
+    QVERIFY(StepRun::waitForAll(120000));
+    QCoreApplication::processEvents();
+    QCoreApplication::processEvents();
+    QCOMPARE(over.count(), 0);
+    QCOMPARE(recorded.count(), 0);
+    QVERIFY(sameSnapshot(session.world()->snapshot(), atOne));
+    QCOMPARE(session.history().lastStep(), 1L);
 }
 
 QTEST_GUILESS_MAIN(TestSessionRun)

@@ -27,10 +27,14 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <algorithm>
+#include <optional>
 
 using namespace rbw;
 
@@ -75,6 +79,9 @@ bool sameSnapshot(const WorldSnapshot& a, const WorldSnapshot& b)
 }
 
 constexpr int kPile = 200;
+// Within the manifold model's work limits (32 n + 128 pairs: up to 68 coincident
+// boxes), so it steps on and on, each step heavy.
+constexpr int kSteppingPile = 60;
 
 } // namespace
 
@@ -87,6 +94,7 @@ private slots:
         QSettings().clear();
         QVERIFY(dir_.isValid());
         QVERIFY(!writePile(dir_.filePath("pile.json"), kPile).isEmpty());
+        QVERIFY(!writePile(dir_.filePath("pile60.json"), kSteppingPile).isEmpty());
     }
     void cleanupTestCase() { QVERIFY(StepRun::waitForAll(120000)); }
 
@@ -94,6 +102,7 @@ private slots:
     void playThenCancel();
     void quitDuringAStep();
     void aStepNotCancelledIsRecorded();
+    void goToAFarStepThenCancel();
 
 private:
     // A window on a scene file whose runs never wait (see the top).
@@ -220,6 +229,80 @@ void TestResponsive::aStepNotCancelledIsRecorded()
     QVERIFY(direct.step());
     QVERIFY(sameSnapshot(w.world()->snapshot(), direct.world()->snapshot()));
     QCOMPARE(w.session()->currentTrace()->diagnostics.total, direct.currentTrace()->diagnostics.total);
+}
+
+// Go to a far step (beyond the recording) on a heavy pile: before issue 22's fix the
+// window computed every step on the GUI thread and froze until the last. Now the busy
+// bar says where it goes, the event loop answers while the steps come in (a timer
+// fires; the history grows slice by slice and the scrubber shows it), Cancel stops it
+// at the last finished step with the history consistent (its last step is the world's,
+// bit for bit, and three direct steps from the same scene give the same state), and a
+// Go to that is left alone arrives.
+void TestResponsive::goToAFarStepThenCancel()
+{
+    MainWindow w;
+    open(w, dir_.filePath("pile60.json"));
+    QSignalSpy over(w.session(), &Session::goToFinished);
+    HistoryScrubber* scrubber = w.historyScrubber();
+    {
+        const StepRun::HoldForTest hold;   // the first slice certainly runs
+        scrubber->stepBox()->setValue(100000);
+        QTest::mouseClick(scrubber->goButton(), Qt::LeftButton);
+        QVERIFY(w.session()->busy());
+        QVERIFY(w.runBusyBar()->isVisible());
+        QVERIFY2(w.runBusyBar()->label()->text().startsWith("Going to step 100000"),
+                 qPrintable(w.runBusyBar()->label()->text()));
+        bool answered = false;
+        QTimer::singleShot(0, &w, [&] { answered = true; });
+        QTRY_VERIFY_WITH_TIMEOUT(answered, 3000);
+        QCOMPARE(w.world()->stepIndex(), 0L);
+    }
+    // Released: the steps come in while the window answers. Once three steps are
+    // recorded, the next slice is held (it waits before its first step), so Cancel
+    // below certainly meets a run, whatever the machine's speed.
+    std::optional<StepRun::HoldForTest> holdNext;
+    connect(w.session(), &Session::runFinished, &w, [&] {
+        if (!holdNext && w.world()->stepIndex() >= 3) holdNext.emplace();
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(holdNext.has_value(), 120000);
+    QVERIFY(w.session()->busy());   // the next slice started, held
+    bool answered = false;
+    QTimer::singleShot(0, &w, [&] { answered = true; });
+    QTRY_VERIFY_WITH_TIMEOUT(answered, 3000);
+    w.historyScrubber()->sync();
+    QVERIFY(scrubber->label()->text().startsWith(QStringLiteral("step %1 of %1").arg(w.world()->stepIndex())));
+    QTest::mouseClick(w.runBusyBar()->cancelButton(), Qt::LeftButton);
+    QVERIFY(!w.session()->busy());
+    QVERIFY(!w.runBusyBar()->isVisible());
+    const long k = w.world()->stepIndex();
+    QVERIFY(k >= 3 && k < 100000);
+    holdNext.reset();   // the abandoned slice computes alone now
+    QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("Cancelled: the scene is at step %1").arg(k)),
+             qPrintable(w.statusBar()->currentMessage()));
+    QVERIFY(StepRun::waitForAll(120000));
+    QTest::qWait(50);
+    // Nothing of the abandoned slice, and no "not reached" note: it was cancelled.
+    const StepHistory& h = w.session()->history();
+    QCOMPARE(w.world()->stepIndex(), k);
+    QCOMPARE(h.lastStep(), k);
+    QVERIFY(sameSnapshot(w.world()->snapshot(), h.current().state));
+    QCOMPARE(over.count(), 0);
+    QVERIFY(!scrubber->note()->isVisible());
+    QVERIFY(scrubber->label()->text().startsWith(QStringLiteral("step %1 of %1").arg(k)));   // "(from n)" once the budget drops steps
+    // The recorded steps are the session's own steps (the oldest kept one after step 3).
+    const long s = std::max(3L, h.firstStep());
+    Session direct;
+    direct.load(w.world()->scene());
+    for (long i = 0; i < s; ++i) QVERIFY(direct.step());
+    QVERIFY(sameSnapshot(h.at(static_cast<std::size_t>(h.indexOfStep(s))).state, direct.world()->snapshot()));
+    // Left alone, a Go to arrives (from the event loop, the bar gone after it).
+    scrubber->stepBox()->setValue(static_cast<int>(k + 2));
+    QTest::mouseClick(scrubber->goButton(), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.session()->busy(), 120000);
+    QCOMPARE(w.world()->stepIndex(), k + 2);
+    QCOMPARE(over.count(), 1);
+    QCOMPARE(over.first().at(1).toBool(), true);
+    QVERIFY(!w.runBusyBar()->isVisible());
 }
 
 RBW_WINDOW_TEST_MAIN(TestResponsive)

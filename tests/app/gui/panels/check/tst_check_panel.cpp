@@ -32,6 +32,7 @@
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QTableView>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -315,7 +316,10 @@ void TestCheckPanel::keptPerLessonAndStep()
 }
 
 // The panel refuses exactly what rbw check refuses, with the same message (issue 22
-// item 5; one code path, app/exercise/answers_input.h; tst_check_cli has the same words).
+// item 5; one code path, app/exercise/answers_input.h): each file is also given to the
+// real rbw check on lesson 8's scene, which must refuse it (exit 2) with the panel's
+// message, line for line (its "rbw: " prefix taken off). The words are the expected
+// reason, so neither side can pass by printing nothing.
 // Lesson 8 at step 0: two bodies, "standard" with probe 0, "template" with probe 1, no
 // contact, 1000 steps.
 void TestCheckPanel::loadRefusesWhatCheckRefuses_data()
@@ -334,6 +338,11 @@ void TestCheckPanel::loadRefusesWhatCheckRefuses_data()
     QTest::newRow("step beyond") << QByteArray(R"({"step": 1000, "answers": [{"quantity": "torque", "body": "standard", "value": [1, 2, 3]}]})")
                                  << "a.json: step: step 1000 is beyond the scene's 1000 steps (the last is step 999); steps count from 0: did you mean step 999?";
     QTest::newRow("empty") << QByteArray("") << "a.json: the file is empty";
+    QTest::newRow("malformed JSON") << QByteArray(R"({"answers": [)") << "a.json: malformed JSON";
+    QTest::newRow("unknown body") << QByteArray(R"({"answers": [{"quantity": "torque", "body": "ghost", "value": [1, 2, 3]}]})")
+                                  << "a.json: answers[0].body: no body named \"ghost\"";
+    QTest::newRow("a form error before a step's") << QByteArray(R"({"answers": [{"quantity": "impulse", "contact": 5, "value": 1}, {"quantity": "omega", "body": "standard", "value": 1}]})")
+                                                  << "a.json: answers[1].quantity: unknown quantity \"omega\"";
 }
 
 void TestCheckPanel::loadRefusesWhatCheckRefuses()
@@ -351,6 +360,20 @@ void TestCheckPanel::loadRefusesWhatCheckRefuses()
     QVERIFY(!l.panel.loadAnswers(path, &error));
     QVERIFY2(error.contains(words), qPrintable(error));
     QCOMPARE(l.model()->index(l.omegaRow, CheckModel::YoursColumn).data().toString(), QString());   // nothing loaded
+
+    // rbw check on the same file, named as the panel names it (run in its folder).
+    QProcess cli;
+    cli.setWorkingDirectory(dir.path());
+    cli.start(QStringLiteral(RBW_CLI_PATH),
+              {"check", QStringLiteral(RBW_SOURCE_DIR "/lessons/08-conventions/scene.json"), "a.json"});
+    QVERIFY(cli.waitForFinished(120000));
+    QCOMPARE(cli.exitCode(), 2);
+    QStringList cliLines = QString::fromUtf8(cli.readAllStandardError()).trimmed().split(QLatin1Char('\n'));
+    for (QString& line : cliLines) {
+        QVERIFY2(line.startsWith(QLatin1String("rbw: ")), qPrintable(line));
+        line.remove(0, 5);
+    }
+    QCOMPARE(error, cliLines.join(QLatin1Char('\n')));
 }
 
 // The check table owns the keyboard while a cell is edited (issue 21 item 8): "[" (the
