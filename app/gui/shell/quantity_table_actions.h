@@ -38,8 +38,8 @@ public:
     bool plotRowOverTime(const QModelIndex& row, bool norm);
 
 private:
-    static constexpr int kChartFitRounds = 4;
-    static constexpr int kChartFitDelayMs = 40;   // the window lays out the resized docks meanwhile
+    static constexpr int kChartFitRounds = 8;
+    static constexpr int kChartFitDelayMs = 60;   // the window lays out the resized docks meanwhile
     // `asked`: the dock area's height asked for in the round before (0: none yet).
     static void growForChart(QDockWidget* dock, QuantityPlot* plot, int rounds, int delayMs, int asked);
 
