@@ -5,6 +5,7 @@
 #include "app/derivation/derivation_builder.h"
 
 #include "app/core/focus_filter.h"
+#include "app/core/step_numbering.h"
 #include "app/derivation/derivation_fallback.h"
 #include "app/derivation/derivation_template.h"
 #include "app/derivation/template_expander.h"
@@ -20,12 +21,13 @@ namespace {
 
 QString stepInfo(const StepTrace& trace, const SceneDef& scene, int digits)
 {
-    // Step k advances t_k = k h to t_{k+1} (trace.h).
-    return QStringLiteral("<p class=\"stepinfo\">%1 \u00b7 step k = %2, from t = %3 to t = %4 (h = %5)</p>\n")
+    // Step k advances t_k to t_{k+1} (trace.h), worded as on every screen
+    // (app/core/step_numbering.h): "step k = 2, from t₂ = 0.0333 to t₃ = 0.05".
+    return QStringLiteral("<p class=\"stepinfo\">%1 \u00b7 step k = %2, from %3 = %4 to %5 = %6 (h = %7)</p>\n")
         .arg(htmlEscape(QString::fromStdString(scene.name)))
         .arg(trace.step)
-        .arg(formatNumber(double(trace.step) * scene.dt, digits), formatNumber(trace.time, digits),
-             formatNumber(scene.dt, digits));
+        .arg(steps::timeName(trace.step), formatNumber(double(trace.step) * scene.dt, digits),
+             steps::timeName(trace.step + 1), formatNumber(trace.time, digits), formatNumber(scene.dt, digits));
 }
 
 QString errorBox(const QStringList& errors)

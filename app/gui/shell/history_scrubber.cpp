@@ -1,6 +1,7 @@
 #include "app/gui/shell/history_scrubber.h"
 
 #include "app/core/session.h"
+#include "app/core/step_numbering.h"
 
 #include <QHBoxLayout>
 #include <QKeyEvent>
@@ -42,7 +43,7 @@ HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
 
     label_ = new QLabel;
     label_->setObjectName("historyLabel");
-    label_->setMinimumWidth(label_->fontMetrics().horizontalAdvance(QStringLiteral("step 000000 of 000000")));
+    label_->setMinimumWidth(label_->fontMetrics().horizontalAdvance(QStringLiteral("after step k = 0000 · 00000 of 00000 steps")));
     layout->addWidget(label_);
     note_ = new QLabel;
     note_->setObjectName("historyNote");
@@ -55,13 +56,15 @@ HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
     noteTimer_->setInterval(8000);
     connect(noteTimer_, &QTimer::timeout, note_, &QWidget::hide);
 
-    layout->addWidget(new QLabel(tr("Go to step")));
+    // The box takes n, the steps taken (the state at t_n, after step k = n - 1).
+    layout->addWidget(new QLabel(tr("Go to n =")));
     stepBox_ = new QSpinBox;
     stepBox_->setObjectName("goToStepBox");
     stepBox_->setRange(0, 10000000);
     stepBox_->setKeyboardTracking(false);
     stepBox_->setFocusPolicy(Qt::ClickFocus);   // never takes the keys the view's shortcuts need by itself
-    stepBox_->setToolTip(tr("A recorded step is shown exactly as recorded; a later one is reached by stepping on."));
+    stepBox_->setToolTip(tr("n steps taken: the state at t_n, after step k = n − 1. A recorded step is shown exactly "
+                            "as recorded; a later one is reached by stepping on."));
     layout->addWidget(stepBox_);
     goButton_ = new QPushButton(tr("Go"));
     goButton_->setObjectName("goToStepButton");
@@ -121,8 +124,10 @@ void HistoryScrubber::sync()
         const QSignalBlocker block(stepBox_);
         stepBox_->setValue(static_cast<int>(std::min<long>(shown, stepBox_->maximum())));
     }
-    QString text = tr("step %1 of %2").arg(shown).arg(h.lastStep());
-    if (h.firstStep() > 0) text += tr(" (from %1)").arg(h.firstStep());
+    // The slider's positions are states: n steps taken, shown by the step that led there
+    // (app/core/step_numbering.h), as the 3D view's top line names it.
+    QString text = tr("%1 · %2 of %3 steps").arg(steps::stateName(shown)).arg(shown).arg(h.lastStep());
+    if (h.firstStep() > 0) text += tr(" (from n = %1)").arg(h.firstStep());
     if (blownUp) text += tr(" · the next step blew up");
     label_->setText(text);
 }

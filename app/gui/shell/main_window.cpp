@@ -1,6 +1,7 @@
 #include "app/gui/shell/main_window.h"
 
 #include "app/core/focus_filter.h"
+#include "app/core/step_numbering.h"
 #include "app/derivation/derivation_builder.h"
 #include "app/gui/panels/accuracy/accuracy_panel.h"
 #include "app/gui/panels/check/check_panel.h"
@@ -401,10 +402,10 @@ void MainWindow::onGoToFinished(long k, bool reached)
     if (reached) {
         alertLabel_->setVisible(!session_.status().ok);
     } else if (k < session_.history().firstStep()) {   // said beside the slider, where it was asked
-        scrubber_->showNote(tr("Step %1 is no longer kept: the history keeps the last %2 steps (from step %3)")
+        scrubber_->showNote(tr("n = %1 is no longer kept: the history keeps the last %2 steps (from n = %3)")
                                 .arg(k).arg(session_.history().size() - 1).arg(session_.history().firstStep()));
     } else {
-        scrubber_->showNote(tr("Step %1 not reached: the run stopped at step %2").arg(k).arg(session_.history().current().state.stepIndex));
+        scrubber_->showNote(tr("n = %1 not reached: the run stopped at n = %2").arg(k).arg(session_.history().current().state.stepIndex));
     }
     scrubber_->sync();
 }
@@ -454,11 +455,12 @@ void MainWindow::updateStatus()
         statusLabel_->setText(tr("No lesson loaded"));
         return;
     }
-    // Steps taken (the view's "after step k" counts from 0), the integrator by its name.
+    // Steps taken and the time they led to, t_n (app/core/step_numbering.h), the
+    // integrator by its name.
     const IntegratorInfo* method = findIntegrator(world->integrator().name());
     const auto count = [this](long long n, const char* one, const char* many) { return n == 1 ? tr(one) : tr(many).arg(n); };
-    QString text = tr("%1 · %2 · t = %3 s · h = %4 s · %5 · %6")
-                       .arg(currentSceneTitle(), count(world->stepIndex(), "1 step taken", "%1 steps taken"))
+    QString text = tr("%1 · %2 · %3 = %4 s · h = %5 s · %6 · %7")
+                       .arg(currentSceneTitle(), steps::stepsTaken(world->stepIndex()), steps::timeName(world->stepIndex()))
                        .arg(world->time(), 0, 'g', 6)
                        .arg(world->scene().dt, 0, 'g', 6)
                        .arg(method != nullptr && *method->title != '\0' ? QString::fromUtf8(method->title)

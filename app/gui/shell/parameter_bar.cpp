@@ -70,8 +70,12 @@ ParameterBar::ParameterBar(Session* session, QWidget* parent)
     integratorBox_ = new QComboBox;
     integratorBox_->setObjectName("integratorBox");
     for (const IntegratorInfo& info : integratorCatalogue()) {
-        integratorBox_->addItem(QString::fromLatin1(info.name));
-        integratorBox_->setItemData(integratorBox_->count() - 1, QString::fromUtf8(info.summary), Qt::ToolTipRole);
+        // The catalogue's name on screen ("classical Runge–Kutta (RK4)"), the id ("rk4")
+        // as the item's data: the scene file and the session speak ids (issue 20).
+        const QString id = QString::fromLatin1(info.name);
+        integratorBox_->addItem(*info.title != '\0' ? QString::fromUtf8(info.title) : id, id);
+        integratorBox_->setItemData(integratorBox_->count() - 1,
+                                    QStringLiteral("%1 (%2)").arg(QString::fromUtf8(info.summary), id), Qt::ToolTipRole);
     }
     connect(integratorBox_, &QComboBox::activated, this, &ParameterBar::onIntegratorActivated);
     addWidget(new QLabel(tr("  Integrator ")));
@@ -173,7 +177,7 @@ void ParameterBar::cycleIntegrator(int direction)
     const int n = integratorBox_->count();
     const int next = (integratorBox_->currentIndex() + direction % n + n) % n;
     QString error;
-    if (!session_->setIntegrator(integratorBox_->itemText(next), &error)) emit messageRequested(error, kMessageMs);
+    if (!session_->setIntegrator(integratorBox_->itemData(next).toString(), &error)) emit messageRequested(error, kMessageMs);
 }
 
 void ParameterBar::stepRestitution(int steps)
@@ -194,7 +198,7 @@ void ParameterBar::syncFromSession()
     const SceneDef& scene = world->scene();
     // Not while the student is typing a value.
     if (!dtBox_->lineEdit()->hasFocus()) dtBox_->setEditText(shortNumber(scene.dt));
-    integratorBox_->setCurrentText(QString::fromStdString(scene.integrator));
+    integratorBox_->setCurrentIndex(integratorBox_->findData(QString::fromStdString(scene.integrator)));
     // A lesson that compares integrators side by side sets one per body: the box
     // would change only the bodies without their own.
     const bool perBody = std::any_of(scene.bodies.begin(), scene.bodies.end(),
@@ -234,7 +238,7 @@ void ParameterBar::onIntegratorActivated(int index)
 {
     if (syncing_ || !session_->isLoaded()) return;
     QString error;
-    if (!session_->setIntegrator(integratorBox_->itemText(index), &error)) {
+    if (!session_->setIntegrator(integratorBox_->itemData(index).toString(), &error)) {
         emit messageRequested(error, kMessageMs);
         syncFromSession();
     }

@@ -13,6 +13,7 @@ class QTreeView;
 namespace rbw {
 
 class CodeView;
+class QuantityPlot;
 class QuantityPlotPanel;
 class Session;
 class TraceModel;
@@ -37,6 +38,11 @@ public:
     bool plotRowOverTime(const QModelIndex& row, bool norm);
 
 private:
+    static constexpr int kChartFitRounds = 8;
+    static constexpr int kChartFitDelayMs = 60;   // the window lays out the resized docks meanwhile
+    // `asked`: the dock area's height asked for in the round before (0: none yet).
+    static void growForChart(QDockWidget* dock, QuantityPlot* plot, int rounds, int delayMs, int asked);
+
     Parts p_;
     Session* session_;
 };

@@ -1,5 +1,6 @@
 #include "app/gui/panels/check/check_panel.h"
 
+#include "app/core/step_numbering.h"
 #include "app/output/atomic_file.h"
 
 #include "app/exercise/answers_input.h"
@@ -59,6 +60,7 @@ CheckPanel::CheckPanel(QWidget* parent) : QWidget(parent)
     model_ = new CheckModel(this);
 
     header_ = new QLabel;
+    header_->setObjectName("checkHeader");
     header_->setWordWrap(true);
     // An input slip of the whole step (rbw check's file hint): steps counted from 1.
     stepHint_ = new QLabel;
@@ -174,10 +176,11 @@ void CheckPanel::setStep(const QString& lesson, std::unique_ptr<World> before, c
 void CheckPanel::updateHeader()
 {
     const bool has = model_->hasStep();
-    header_->setText(has ? tr("Step %1: type your numbers into <b>Yours</b>, e.g. <tt>(-2.4, 4.918, -1.765)</tt>, "
+    // The step's name as every screen words it (app/core/step_numbering.h).
+    header_->setText(has ? tr("<b>%1</b>: type your numbers into <b>Yours</b>, e.g. <tt>(-2.4, 4.918, -1.765)</tt>, "
                               "<tt>64/27</tt> or a matrix row by row <tt>4.8 0 0; 0 9.836 0; 0 0 4.412</tt>. "
                               "The rows above an entry are its earlier answers.")
-                               .arg(model_->step())
+                               .arg(steps::stepSpan(model_->step()))
                          : tr("Take a step (Step) to check your numbers for it."));
     save_->setEnabled(has);
     load_->setEnabled(has);

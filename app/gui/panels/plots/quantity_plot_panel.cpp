@@ -7,6 +7,7 @@
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QLabel>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -31,6 +32,9 @@ QuantityPlotPanel::QuantityPlotPanel(QWidget* parent)
     tabs_ = new QTabWidget(this);
     tabs_->setObjectName("quantityPlotTabs");
     tabs_->setDocumentMode(true);
+    // One plot needs no tab (its legend names it, its bar has Close): the chart keeps
+    // the row (issue 20, a chart tall enough to read at 1366x768).
+    tabs_->tabBar()->setAutoHide(true);
     tabs_->setTabsClosable(true);
     connect(tabs_, &QTabWidget::tabCloseRequested, this,
             [this](int i) { removePlot(qobject_cast<QuantityPlot*>(tabs_->widget(i))); });

@@ -1,5 +1,6 @@
 #include "app/gui/panels/quantities/trace_model.h"
 
+#include "app/core/step_numbering.h"
 #include "app/output/value_format.h"
 #include "physics/engine/quantities.h"
 #include "physics/engine/world.h"
@@ -242,7 +243,9 @@ void TraceModel::setTrace(const StepTrace& trace, const SceneDef& scene)
             touched[i] = nowChanged || changed_[i];
             changed_[i] = nowChanged;
         }
+        const bool newStep = trace.step != trace_.step;
         trace_ = trace;
+        if (newStep) emit headerDataChanged(Qt::Horizontal, BeforeColumn, ValueColumn);
         for (size_t i = 0; i < trace_.entries.size(); ++i) {
             if (!touched[i]) continue;
             const Node& n = nodes_[rowOfEntry_[i]];
@@ -298,7 +301,10 @@ void TraceModel::rebuild(const SceneDef& scene)
             : std::vector<Stage>{Stage::Forces, Stage::Integration, Stage::Collision, Stage::Correction, Stage::Probes};
     auto title = [&](Stage stage) {
         if (startOnly_) {
-            return tr("Start: the state at t = %1 s, before step %2").arg(trace_.time, 0, 'g', 6).arg(trace_.step);
+            return tr("Start: the state at %1 = %2 s, %3")
+                .arg(steps::timeName(trace_.step))
+                .arg(trace_.time, 0, 'g', 6)
+                .arg(steps::beforeStep(trace_.step));
         }
         if (stage == Stage::Integration && impulseAfterIntegration_) {
             return tr("Integration (After: before the collision impulse above)");
@@ -468,7 +474,7 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const
         return QVariant(Qt::AlignLeft | Qt::AlignTop);
     case Qt::ToolTipRole:
         if (startOnly_) {
-            return tr("%1 at t = %2 s, the state step %3 starts from:\n%4")
+            return tr("%1 at t = %2 s, the state step k = %3 starts from:\n%4")
                 .arg(QString::fromUtf8(e.info->text))
                 .arg(trace_.time, 0, 'g', 6)
                 .arg(trace_.step)
@@ -539,8 +545,9 @@ QVariant TraceModel::headerData(int section, Qt::Orientation orientation, int ro
     switch (section) {
     case QuantityColumn: return tr("Quantity");
     case SymbolColumn: return tr("Symbol");
-    case BeforeColumn: return tr("Before");
-    case ValueColumn: return tr("After");
+    // A step's columns are its times, t_k and t_{k+1} (app/core/step_numbering.h).
+    case BeforeColumn: return hasStep() ? tr("Before, %1").arg(steps::timeName(trace_.step)) : tr("Before");
+    case ValueColumn: return hasStep() ? tr("After, %1").arg(steps::timeName(trace_.step + 1)) : tr("After");
     case FrameColumn: return tr("Frame");
     case UnitColumn: return tr("Unit");
     case SourceColumn: return tr("Source");

@@ -67,6 +67,8 @@ public:
     // q, R, L, I^-1 and omega as the world holds them, in the Before column.
     void setStart(const World& world);
     bool showsStart() const { return startOnly_; }
+    // A step's trace is shown (not the start state, not empty): its columns are t_k, t_{k+1}.
+    bool hasStep() const { return !startOnly_ && !trace_.entries.empty(); }
     const StepTrace& trace() const { return trace_; }
     // Significant digits of a matrix in the Before and After cells (3..7, default 7).
     // Emits nothing: the same three lines, only shorter; the caller (TraceView) repaints.

@@ -1,6 +1,7 @@
 #include "app/gui/panels/view/scene_end_bar.h"
 
 #include "app/core/session.h"
+#include "app/core/step_numbering.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -69,8 +70,8 @@ bool SceneEndBar::checkEnd()
 {
     if (!armed_ || !session_->isLoaded() || session_->world()->stepIndex() < endStep()) return false;
     armed_ = false;
-    label_->setText(tr("End of the scene (step %1, t = %2 s) — Reset or Continue")
-                        .arg(endStep())
+    label_->setText(tr("End of the scene (%1, %2 = %3 s) — Reset or Continue")
+                        .arg(steps::stepsTaken(endStep()), steps::timeName(endStep()))
                         .arg(session_->world()->time(), 0, 'g', 6));
     show();
     emit endReached();

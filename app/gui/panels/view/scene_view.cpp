@@ -1,5 +1,6 @@
 #include "app/gui/panels/view/scene_view.h"
 
+#include "app/core/step_numbering.h"
 #include "app/output/atomic_file.h"
 #include "physics/engine/integrator_registry.h"
 
@@ -260,15 +261,14 @@ void SceneView::follow()
 
 QString SceneView::infoText() const
 {
-    // Steps are counted from k = 0 everywhere (docs/user-guide.md): the line names the
-    // step just taken, as the derivation and Check my numbers do.
-    const QString step = snapshot_.nextStep > 0 ? tr("after step k = %1").arg(snapshot_.nextStep - 1)
-                                                : tr("before step k = 0");
+    // One step numbering everywhere (app/core/step_numbering.h): the line names the
+    // step just taken and the time it led to, "after step k = 2 · t₃ = 0.05 s".
+    const QString step = steps::stateName(snapshot_.nextStep);
     const IntegratorInfo* integrator = findIntegrator(snapshot_.integrator);
     const QString method = integrator != nullptr && *integrator->title != '\0' ? QString::fromUtf8(integrator->title)
                                                                                : QString::fromStdString(snapshot_.integrator);
-    QString text = tr("%1 · t = %2 s · h = %3 s · %4")
-                       .arg(step)
+    QString text = tr("%1 · %2 = %3 s · h = %4 s · %5")
+                       .arg(step, steps::timeName(snapshot_.nextStep))
                        .arg(shortNumber(snapshot_.time))
                        .arg(shortNumber(snapshot_.h))   // as the h box shows it
                        .arg(method);

@@ -268,13 +268,13 @@ void TestHistoryScrubber::afterABlowUp()
     for (int i = 0; i < 40 && w.world()->status().ok; ++i) {
         w.stepOnce();
         // negative control: until the blow-up the label is the world's step
-        if (w.world()->status().ok) QCOMPARE(scrubber->label()->text(), QStringLiteral("step %1 of %1").arg(w.world()->stepIndex()));
+        if (w.world()->status().ok) QCOMPARE(scrubber->label()->text(), QStringLiteral("after step k = %1 · %2 of %2 steps").arg(w.world()->stepIndex() - 1).arg(w.world()->stepIndex()));
     }
     QVERIFY(!w.world()->status().ok);
     const long kept = w.session()->history().lastStep();
     QCOMPARE(kept, 13L);
     QCOMPARE(w.world()->stepIndex(), kept + 1);
-    QCOMPARE(scrubber->label()->text(), QStringLiteral("step 13 of 13 · the next step blew up"));
+    QCOMPARE(scrubber->label()->text(), QStringLiteral("after step k = 12 · 13 of 13 steps · the next step blew up"));
     QCOMPARE(scrubber->slider()->value(), 13);
     QCOMPARE(scrubber->stepBox()->value(), 13);
     // Go to a kept step: the state there, and the run may go on from it.
@@ -282,7 +282,7 @@ void TestHistoryScrubber::afterABlowUp()
     QTest::mouseClick(scrubber->goButton(), Qt::LeftButton);
     QCOMPARE(w.world()->stepIndex(), 5L);
     QVERIFY(w.world()->status().ok);
-    QCOMPARE(scrubber->label()->text(), QStringLiteral("step 5 of 13"));
+    QCOMPARE(scrubber->label()->text(), QStringLiteral("after step k = 4 · 5 of 13 steps"));
 }
 
 // Lesson 1 (one box) keeps the last 1000 steps: after 1100, steps 0..99 are gone.
@@ -297,14 +297,14 @@ void TestHistoryScrubber::aStepNoLongerKeptIsSaid()
     QCOMPARE(w.session()->advance(1100, 1e9), 1100);
     HistoryScrubber* scrubber = w.historyScrubber();
     QCOMPARE(w.session()->history().firstStep(), 100L);
-    QCOMPARE(scrubber->label()->text(), QStringLiteral("step 1100 of 1100 (from 100)"));
+    QCOMPARE(scrubber->label()->text(), QStringLiteral("after step k = 1099 · 1100 of 1100 steps (from n = 100)"));
     QVERIFY(!scrubber->note()->isVisible());
     scrubber->stepBox()->setValue(3);
     QTest::mouseClick(scrubber->goButton(), Qt::LeftButton);
     QCOMPARE(w.world()->stepIndex(), 1100L);
     QVERIFY(scrubber->note()->isVisible());
-    QCOMPARE(scrubber->note()->text(), QStringLiteral("Step 3 is no longer kept: the history keeps the last 1000 steps (from step 100)"));
-    QVERIFY(scrubber->note()->width() >= scrubber->note()->fontMetrics().horizontalAdvance("Step 3 is no longer kept") ||
+    QCOMPARE(scrubber->note()->text(), QStringLiteral("n = 3 is no longer kept: the history keeps the last 1000 steps (from n = 100)"));
+    QVERIFY(scrubber->note()->width() >= scrubber->note()->fontMetrics().horizontalAdvance("n = 3 is no longer kept") ||
             scrubber->note()->height() > scrubber->note()->fontMetrics().height());   // on screen, not squeezed away
     // A kept step goes, and the note goes with the new request.
     scrubber->stepBox()->setValue(500);

@@ -4,6 +4,7 @@
 // shows the old value again, and reports the playback speed.
 #include "app/core/session.h"
 #include "app/gui/shell/parameter_bar.h"
+#include "physics/engine/integrator_registry.h"
 #include "tests/test_support.h"
 
 #include <QCheckBox>
@@ -26,6 +27,8 @@ private slots:
     void speedNotches_data();
     void speedNotches();
     void perBodyIntegratorsDisableTheBox();
+    void integratorsByName_data();
+    void integratorsByName();
 };
 
 void TestParameterBar::showsTheLoadedScene()
@@ -34,7 +37,9 @@ void TestParameterBar::showsTheLoadedScene()
     ParameterBar bar(&s);
     s.load(lessonScene("07-bounce/scene.json"));   // dt 0.005, explicit Euler, g, c 0.8
     QCOMPARE(bar.findChild<QComboBox*>("dtBox")->currentText(), QString("0.005"));
-    QCOMPARE(bar.findChild<QComboBox*>("integratorBox")->currentText(), QString("explicit-euler"));
+    // The integrator by its catalogue name, its id as the item's data.
+    QCOMPARE(bar.findChild<QComboBox*>("integratorBox")->currentText(), QString("explicit Euler"));
+    QCOMPARE(bar.findChild<QComboBox*>("integratorBox")->currentData().toString(), QString("explicit-euler"));
     QVERIFY(bar.findChild<QCheckBox*>("gravityBox")->isChecked());
     QCOMPARE(bar.findChild<QDoubleSpinBox*>("restitutionBox")->value(), 0.8);
     QVERIFY(bar.findChild<QDoubleSpinBox*>("restitutionBox")->isEnabled());   // lesson 7 has a ground plane
@@ -58,7 +63,7 @@ void TestParameterBar::controlsWriteThroughTheSession()
     bar.findChild<QCheckBox*>("gravityBox")->setChecked(false);
     QVERIFY(!s.gravityEnabled());
     auto* integrators = bar.findChild<QComboBox*>("integratorBox");
-    const int rk4 = integrators->findText("rk4");
+    const int rk4 = integrators->findData("rk4");
     QVERIFY(rk4 >= 0);
     integrators->activated(rk4);   // as a click on the list
     QCOMPARE(s.world()->scene().integrator, std::string("rk4"));
@@ -145,6 +150,44 @@ void TestParameterBar::perBodyIntegratorsDisableTheBox()
     const std::string before = s.world()->scene().integrator;
     bar.cycleIntegrator(+1);
     QCOMPARE(s.world()->scene().integrator, before);
+}
+
+// The Integrator box shows the catalogue's names (issue 20: it showed ids, "rk4"),
+// in the catalogue's order; each item carries its id, and choosing it runs that id.
+void TestParameterBar::integratorsByName_data()
+{
+    QTest::addColumn<QString>("id");
+    QTest::addColumn<QString>("shown");   // physics/engine/integrator_registry.cpp's title
+    QTest::newRow("explicit-euler") << "explicit-euler" << "explicit Euler";
+    QTest::newRow("symplectic-euler") << "symplectic-euler" << "symplectic Euler";
+    QTest::newRow("rk4") << "rk4" << QStringLiteral("classical Runge–Kutta (RK4)");
+    QTest::newRow("implicit-midpoint") << "implicit-midpoint" << "implicit midpoint";
+}
+
+void TestParameterBar::integratorsByName()
+{
+    QFETCH(QString, id);
+    QFETCH(QString, shown);
+    Session s;
+    ParameterBar bar(&s);
+    s.load(lessonScene("07-bounce/scene.json"));
+    auto* box = bar.findChild<QComboBox*>("integratorBox");
+    QCOMPARE(box->count(), static_cast<int>(integratorCatalogue().size()));
+    for (int i = 0; i < box->count(); ++i) {
+        const IntegratorInfo& info = integratorCatalogue()[static_cast<std::size_t>(i)];
+        QCOMPARE(box->itemData(i).toString(), QString::fromLatin1(info.name));
+        QCOMPARE(box->itemText(i), QString::fromUtf8(info.title));
+        QVERIFY(box->itemText(i) != box->itemData(i).toString());   // a name, never the id
+    }
+    const int item = box->findText(shown);
+    QVERIFY2(item >= 0, qPrintable(shown));
+    QCOMPARE(box->itemData(item).toString(), id);
+    QCOMPARE(box->findText(id), -1);   // the id itself is nowhere on screen
+    emit box->activated(item);   // as a click on the list
+    QCOMPARE(QString::fromStdString(s.world()->scene().integrator), id);
+    // The box follows the session by id.
+    QVERIFY(s.setIntegrator(QStringLiteral("explicit-euler")));
+    QCOMPARE(box->currentText(), QStringLiteral("explicit Euler"));
 }
 
 QTEST_MAIN(TestParameterBar)

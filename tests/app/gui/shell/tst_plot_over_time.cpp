@@ -179,10 +179,9 @@ void TestPlotOverTime::plotR22OfLesson9Alone()
     // Negative control: R₁₁ is another series.
     QVERIFY(rbwSeries(run, "rotation_matrix", body0, 0) != expected);
 
-    // The dock grows for it: it asks for a 300 px chart (kReadableChartHeight); at
-    // 1366x768 the window gives 274 px (measured; about 130 px before, the legend's nine
-    // entries cut). Not yet the 300 the issue asks for: see the branch's report.
-    QTRY_VERIFY2(plot->chartView()->height() >= 260, qPrintable(QString::number(plot->chartView()->height())));
+    // The dock grows for it: a chart of at least 300 px (kReadableChartHeight) at
+    // 1366x768 (issue 20: about 90 px at first, 274 px when the dock grew only once).
+    QTRY_VERIFY2(plot->chartView()->height() >= kReadableChartHeight, qPrintable(QString::number(plot->chartView()->height())));
     QVERIFY(plot->chartView()->height() <= kReadableChartHeight + 20);   // no more than it asked for
 }
 

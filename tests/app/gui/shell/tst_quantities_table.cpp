@@ -72,8 +72,9 @@ void TestQuantitiesTable::lesson1OmegaInPanelAndDerivation()
     const QModelIndex r = findRow(model, "orientation");
     QCOMPARE(model->index(r.row(), TraceModel::BeforeColumn, r.parent()).data().toString(),
              QString("w 0.7071068\nx 0\ny 0\nz 0.7071068"));
-    QCOMPARE(model->headerData(TraceModel::BeforeColumn, Qt::Horizontal).toString(), QString("Before"));
-    QCOMPARE(model->headerData(TraceModel::ValueColumn, Qt::Horizontal).toString(), QString("After"));
+    // Step k = 0 goes from t₀ to t₁ (one step numbering, app/core/step_numbering.h).
+    QCOMPARE(model->headerData(TraceModel::BeforeColumn, Qt::Horizontal).toString(), QStringLiteral("Before, t₀"));
+    QCOMPARE(model->headerData(TraceModel::ValueColumn, Qt::Horizontal).toString(), QStringLiteral("After, t₁"));
     // A force has no value before the step: it is computed in it (negative control).
     const QModelIndex f = findRow(model, "force");
     QVERIFY(model->index(f.row(), TraceModel::BeforeColumn, f.parent()).data().toString().isEmpty());

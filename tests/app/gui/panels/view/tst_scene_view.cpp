@@ -481,7 +481,7 @@ void TestSceneView::infoOverlayAndStateArrows()
     const QString info = view.infoText();
     // Ten steps taken: the last was k = 9 (steps count from 0, as in the derivation);
     // the integrator by its name, not its id.
-    QVERIFY2(info.startsWith("after step k = 9 · t = 0.1 s") && info.contains("h = 0.01 s") &&
+    QVERIFY2(info.startsWith("after step k = 9 · t₁₀ = 0.1 s") && info.contains("h = 0.01 s") &&
                  info.contains("explicit Euler") && !info.contains("explicit-euler"),
              qPrintable(info));
     QVERIFY2(info.contains(QStringLiteral("E = %1 J").arg(s.trace.diagnostics.total, 0, 'g', 7)), qPrintable(info));
