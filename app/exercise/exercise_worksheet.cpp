@@ -2,6 +2,7 @@
 
 #include "app/output/value_format.h"
 #include "app/scene/scene_format.h"
+#include "physics/engine/integrator_registry.h"
 #include "physics/engine/quantity_catalogue.h"
 
 #include <QJsonArray>
@@ -141,7 +142,13 @@ QString exerciseWorksheetHtml(const ExerciseSpec& spec, const GeneratedExercise&
     for (auto it = scene.begin(); it != scene.end(); ++it) {
         if (it.value().isArray() && !it.value().toArray().isEmpty() && it.value().toArray()[0].isObject()) continue;
         if (it.key() == key(Key::Name) || it.key() == key(Key::Description)) continue;
-        html += "<tr><th>" + label(it.key()).toHtmlEscaped() + "</th><td>" + cellText(it.value()).toHtmlEscaped() + "</td></tr>\n";
+        QString text = cellText(it.value());
+        // The integrator by its name ("explicit Euler"), as the app's integrator box shows it.
+        if (it.key() == key(Key::Integrator)) {
+            const IntegratorInfo* info = findIntegrator(it.value().toString().toStdString());
+            if (info != nullptr && *info->title != '\0') text = QString::fromUtf8(info->title);
+        }
+        html += "<tr><th>" + label(it.key()).toHtmlEscaped() + "</th><td>" + text.toHtmlEscaped() + "</td></tr>\n";
     }
     html += "</table>\n";
     // Each list of the scene (bodies, forces, torques, ...) as a table, in the table's order.

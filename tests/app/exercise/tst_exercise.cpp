@@ -10,6 +10,7 @@
 
 #include "app/exercise/exercise.h"
 #include "app/output/value_format.h"
+#include "physics/engine/integrator_registry.h"
 #include "physics/engine/world.h"
 
 #include <QDir>
@@ -408,6 +409,26 @@ private slots:
                                                         : QString::fromStdString(g.scene->planes[c.plane].name));
             QVERIFY2(sheet.contains(joins), qPrintable(joins));
         }
+    }
+
+    // The worksheet's setup names the integrator as the app's integrator box does, by
+    // the catalogue's title, never by the scene file's id (issue 20: "integrator ids
+    // instead of names").
+    void worksheetNamesTheIntegrator()
+    {
+        const rbw::ExerciseLoadResult spec = rbw::loadExercise(QStringLiteral("01-one-step"));
+        QVERIFY(spec.ok());
+        const rbw::GeneratedExercise g = rbw::generateExercise(*spec.spec, 7);
+        QVERIFY(g.ok());
+        const rbw::IntegratorInfo* info = rbw::findIntegrator(g.scene->integrator);
+        QVERIFY(info != nullptr);
+        QVERIFY(*info->title != '\0');
+        const QString sheet = rbw::exerciseWorksheetHtml(*spec.spec, g, false);
+        const QString row = QStringLiteral("</th><td>%1</td></tr>").arg(QString::fromUtf8(info->title).toHtmlEscaped());
+        QVERIFY2(sheet.contains(row), qPrintable(row));
+        // control: the id itself appears nowhere in a setup cell
+        const QString idCell = QStringLiteral("<td>%1</td>").arg(QString::fromStdString(g.scene->integrator));
+        QVERIFY2(!sheet.contains(idCell), qPrintable(idCell));
     }
 
     void badInputs_data()
