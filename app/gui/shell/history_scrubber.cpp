@@ -3,7 +3,7 @@
 #include "app/core/session.h"
 #include "app/core/step_numbering.h"
 
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QPushButton>
@@ -22,16 +22,21 @@ HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
     , session_(session)
 {
     setObjectName("historyScrubber");
-    auto* layout = new QHBoxLayout(this);
+    // Two rows: the slider and Go to on the first, where the history stands (and any
+    // note) on the second, so that the row fits beside a readable Lesson panel and the
+    // quantities table at 1366 px (one row was about 650 px wide and squeezed the docks).
+    auto* layout = new QGridLayout(this);
     layout->setContentsMargins(8, 3, 8, 3);
-    layout->setSpacing(8);
+    layout->setHorizontalSpacing(8);
+    layout->setVerticalSpacing(0);
+    layout->setColumnStretch(1, 1);
 
     auto* title = new QLabel(tr("History"));
     title->setToolTip(tr("Every recorded step (up to the last 1000; fewer in a scene with many bodies, whose steps "
                          "take more memory). Drag to see the state and the numbers of "
                          "any recorded step exactly as they were computed. Stepping or playing from an earlier "
                          "step discards the later ones."));
-    layout->addWidget(title);
+    layout->addWidget(title, 0, 0);
 
     slider_ = new QSlider(Qt::Horizontal);
     slider_->setObjectName("historySlider");
@@ -39,25 +44,24 @@ HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
     slider_->setFocusPolicy(Qt::ClickFocus);
     slider_->setToolTip(title->toolTip());
     connect(slider_, &QSlider::valueChanged, this, &HistoryScrubber::onSliderValueChanged);
-    layout->addWidget(slider_, 1);
+    layout->addWidget(slider_, 0, 1);
 
     label_ = new QLabel;
     label_->setObjectName("historyLabel");
-    label_->setMinimumWidth(label_->fontMetrics().horizontalAdvance(QStringLiteral("after step k = 0000 · 00000 of 00000 steps")));
-    layout->addWidget(label_);
+    layout->addWidget(label_, 1, 1);
     note_ = new QLabel;
     note_->setObjectName("historyNote");
     note_->setStyleSheet("QLabel{color:#b3261e;font-weight:bold}");
     note_->setWordWrap(true);
     note_->hide();
-    layout->addWidget(note_, 1);
+    layout->addWidget(note_, 1, 2, 1, 3);
     noteTimer_ = new QTimer(this);
     noteTimer_->setSingleShot(true);
     noteTimer_->setInterval(8000);
     connect(noteTimer_, &QTimer::timeout, note_, &QWidget::hide);
 
     // The box takes n, the steps taken (the state at t_n, after step k = n - 1).
-    layout->addWidget(new QLabel(tr("Go to n =")));
+    layout->addWidget(new QLabel(tr("Go to n =")), 0, 2);
     stepBox_ = new QSpinBox;
     stepBox_->setObjectName("goToStepBox");
     stepBox_->setRange(0, 10000000);
@@ -65,7 +69,7 @@ HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
     stepBox_->setFocusPolicy(Qt::ClickFocus);   // never takes the keys the view's shortcuts need by itself
     stepBox_->setToolTip(tr("n steps taken: the state at t_n, after step k = n − 1. A recorded step is shown exactly "
                             "as recorded; a later one is reached by stepping on."));
-    layout->addWidget(stepBox_);
+    layout->addWidget(stepBox_, 0, 3);
     goButton_ = new QPushButton(tr("Go"));
     goButton_->setObjectName("goToStepButton");
     goButton_->setFocusPolicy(Qt::TabFocus);
@@ -79,7 +83,7 @@ HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
         note_->hide();
         emit stepRequested(stepBox_->value());
     });
-    layout->addWidget(goButton_);
+    layout->addWidget(goButton_, 0, 4);
     stepBox_->installEventFilter(this);
     sync();
 }

@@ -21,6 +21,7 @@
 #include <QSplitter>
 #include <QTabWidget>
 #include <QTextBrowser>
+#include <QTextDocument>
 #include <QTimer>
 #include <QTreeView>
 #include "app/gui/panels/quantities/trace_view.h"
@@ -54,6 +55,10 @@ ShellDocks buildDocks(QMainWindow* window, const QList<Lesson>& lessons, TraceMo
     d.lessonText = new QTextBrowser;
     d.lessonText->setObjectName("lessonText");
     d.lessonText->setOpenExternalLinks(true);
+    // Headings sized for a side panel: Qt's default h1 (xx-large) broke a lesson's title
+    // mid-word at 1366 px ("intermediat e-axis").
+    d.lessonText->document()->setDefaultStyleSheet(
+        QStringLiteral("h1{font-size:x-large} h2{font-size:large} h3{font-size:medium}"));
     auto* textDock = new QDockWidget(QObject::tr("Lesson"), window);
     textDock->setObjectName("lessonTextDock");
     textDock->setWidget(d.lessonText);
