@@ -1,9 +1,9 @@
 #include "app/cli/diagnose_command.h"
 #include "app/cli/standard_output.h"
 
-#include "app/cli/diagnose_report.h"
-#include "app/cli/probe_answer_files.h"
-#include "app/cli/simulator_process.h"
+#include "app/simulator/diagnose_report.h"
+#include "app/simulator/probe_answer_files.h"
+#include "app/simulator/simulator_process.h"
 #include "physics/workbook/probes/collision_replay.h"
 #include "physics/workbook/probes/probe_models.h"
 #include "physics/workbook/probes/probe_verdict.h"

@@ -20,7 +20,9 @@ rbw_room(app/scene                 MAY_INCLUDE physics/engine app/output)
 rbw_room(app/core                  MAY_INCLUDE physics/engine app/scene)
 rbw_room(app/exercise              MAY_INCLUDE physics app/core app/output app/scene)
 rbw_room(app/derivation            MAY_INCLUDE physics app/core app/output)
-rbw_room(app/cli                   MAY_INCLUDE physics app/core app/output app/scene app/exercise app/derivation)
+rbw_room(app/simulator             MAY_INCLUDE physics)
+rbw_room(app/cli                   MAY_INCLUDE physics app/core app/output app/scene app/exercise app/derivation
+                                               app/simulator)
 
 rbw_room(app/gui/style)
 rbw_room(app/gui/panels/view       MAY_INCLUDE physics/engine app/core app/output app/gui/style)

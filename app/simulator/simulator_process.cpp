@@ -1,4 +1,4 @@
-#include "app/cli/simulator_process.h"
+#include "app/simulator/simulator_process.h"
 
 #include <QByteArray>
 #include <QDeadlineTimer>
