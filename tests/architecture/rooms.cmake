@@ -33,6 +33,7 @@ rbw_room(app/gui/panels/plots      MAY_INCLUDE physics app/core app/output app/g
 rbw_room(app/gui/panels/accuracy   MAY_INCLUDE physics app/core app/output app/exercise)
 rbw_room(app/gui/panels/check      MAY_INCLUDE physics app/core app/output app/exercise)
 rbw_room(app/gui/panels/editor     MAY_INCLUDE physics/engine app/scene)
+rbw_room(app/gui/panels/simulator  MAY_INCLUDE physics app/simulator)
 rbw_room(app/gui/shell             MAY_INCLUDE physics app)
 
 # The student's side of the simulator protocol: it stands in for a student's own code,
