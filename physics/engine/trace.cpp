@@ -47,11 +47,14 @@ std::string_view sourceFile(const TraceEntry& e)
     // The physics library is compiled with -fmacro-prefix-map=<source dir>/= (CMake), so
     // file_name() is already relative; a build without it keeps the absolute path, of
     // which the part from the last "physics/" on is the repository-relative one.
+    // A build through ccache with a base_dir compiles "../physics/x.cpp" (relative to the
+    // build tree), which the map does not touch: the leading "../" and "./" go too.
     std::string_view f = e.where.file_name();
     if (!f.empty() && f.front() == '/') {
         const size_t at = f.rfind("/physics/");
         if (at != std::string_view::npos) f.remove_prefix(at + 1);
     }
+    while (f.starts_with("../") || f.starts_with("./")) f.remove_prefix(f.front() == '.' && f[1] == '.' ? 3 : 2);
     return f;
 }
 
