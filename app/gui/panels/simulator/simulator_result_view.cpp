@@ -91,7 +91,7 @@ SimulatorResultView::SimulatorResultView(QWidget* parent) : QWidget(parent)
 
     probes_ = new QTableWidget(0, 4, this);
     probes_->setObjectName("probesTable");
-    probes_->setHorizontalHeaderLabels({tr("probe"), tr("result"), tr("reproduced by"), tr("what it brings out")});
+    probes_->setHorizontalHeaderLabels({tr("Probe"), tr("Result"), tr("Reproduced by"), tr("What it brings out")});
     probes_->setSelectionBehavior(QAbstractItemView::SelectRows);
     probes_->setSelectionMode(QAbstractItemView::SingleSelection);
     probes_->verticalHeader()->setVisible(false);
@@ -121,7 +121,7 @@ SimulatorResultView::SimulatorResultView(QWidget* parent) : QWidget(parent)
 
     steps_ = new QTableWidget(0, 6, this);
     steps_->setObjectName("stepsTable");
-    steps_->setHorizontalHeaderLabels({tr("answer"), tr("step"), tr("body"), tr("quantity"), tr("workbook"), tr("yours")});
+    steps_->setHorizontalHeaderLabels({tr("#"), tr("Step"), tr("Body"), tr("Quantity"), tr("Workbook"), tr("Yours")});
     steps_->setSelectionBehavior(QAbstractItemView::SelectRows);
     steps_->verticalHeader()->setVisible(false);
     steps_->horizontalHeader()->setStretchLastSection(true);
@@ -139,15 +139,15 @@ SimulatorResultView::SimulatorResultView(QWidget* parent) : QWidget(parent)
     probeLayout->addLayout(sliderRow);
     probeLayout->addWidget(steps_, 1);
 
-    auto* tables = new QSplitter(Qt::Horizontal, this);
-    tables->addWidget(probes_);
-    tables->addWidget(probePane);
-    tables->setStretchFactor(0, 2);
-    tables->setStretchFactor(1, 3);
+    tables_ = new QSplitter(Qt::Horizontal, this);
+    tables_->addWidget(probes_);
+    tables_->addWidget(probePane);
+    tables_->setStretchFactor(0, 1);
+    tables_->setStretchFactor(1, 4);
     auto* split = new QSplitter(Qt::Vertical, this);
     split->setObjectName("resultSplitter");
     split->addWidget(details_);
-    split->addWidget(tables);
+    split->addWidget(tables_);
     split->setStretchFactor(0, 2);
     split->setStretchFactor(1, 3);
 
@@ -257,6 +257,9 @@ void SimulatorResultView::showRun(const DiagnoseRun& run, const std::vector<prob
             "</small></p>";
     details_->setHtml(html);
     fillProbeTable();
+    // the values side by side get four fifths of the width (at 1366×768 none is cut)
+    const int width = tables_->width();
+    if (width > 0) tables_->setSizes({width / 5, width - width / 5});
     if (!run_.probes.empty()) {
         const int first = d.divergenceProbe >= 0 ? d.divergenceProbe : 0;
         probes_->setCurrentCell(first, 0);

@@ -17,6 +17,7 @@
 class QLabel;
 class QPushButton;
 class QSlider;
+class QSplitter;
 class QTableWidget;
 class QTextBrowser;
 
@@ -59,6 +60,7 @@ private:
     QLabel* error_ = nullptr;
     QTextBrowser* details_ = nullptr;
     QTableWidget* probes_ = nullptr;
+    QSplitter* tables_ = nullptr;
     QLabel* probeDivergence_ = nullptr;
     QSlider* slider_ = nullptr;
     QLabel* sliderLabel_ = nullptr;
