@@ -2,7 +2,7 @@
 // Check my simulator (issue 23, docs/simulator-protocol.md): runs the student's own
 // program (CMD, started as a child process, one run per probe) through the motion
 // probes (physics/workbook/probes/), reads its `state` answers strictly
-// (app/cli/simulator_process.h) and says what they are: the course algorithm's
+// (app/simulator/simulator_process.h) and says what they are: the course algorithm's
 // (matches), a mistake model's (explained, with its id), partly a model's, or nothing
 // the workbook knows (unexplained), with the first number that leaves the right
 // algorithm.

@@ -3,6 +3,7 @@
 #include "app/gui/panels/derivation/derivation_view.h"
 #include "app/gui/panels/editor/scene_editor.h"
 #include "app/gui/panels/plots/plot_panel.h"
+#include "app/gui/panels/simulator/simulator_dialog.h"
 #include "app/gui/panels/view/scene_view.h"
 #include "app/gui/shell/exercise_actions.h"
 #include "app/gui/shell/help_dialogs.h"
@@ -178,6 +179,16 @@ ShellActions::ShellActions(MainWindow* window, ExerciseActions* exercise)
     auto* guide = add(tr("&User guide"), "actionUserGuide", {});
     guide->setToolTip(tr("The user guide (docs/user-guide.md), with screenshots"));
     connect(guide, &QAction::triggered, w, [w] { showUserGuide(w); });
+    // Tools → Compare with my simulator: one dialog per window, keeping its inputs (docs/simulator-protocol.md).
+    auto* compare = add(tr("&Compare with my simulator…"), "actionCompareSimulator", {});
+    compare->setToolTip(tr("Run your own simulator through the probes and name its mistakes"));
+    connect(compare, &QAction::triggered, w, [w] {
+        auto* dialog = w->findChild<SimulatorDialog*>(QString(), Qt::FindDirectChildrenOnly);
+        if (dialog == nullptr) dialog = new SimulatorDialog(w);
+        dialog->show();
+        dialog->raise();
+        dialog->activateWindow();
+    });
     auto* about = add(tr("&About Rigid Body Workbook"), "actionAbout", {});
     connect(about, &QAction::triggered, w, [w] { showAbout(w); });
 
@@ -224,6 +235,7 @@ ShellActions::ShellActions(MainWindow* window, ExerciseActions* exercise)
     followMenu_->setObjectName("followMenu");
     viewMenu->addSeparator();
     for (QDockWidget* dock : w->findChildren<QDockWidget*>()) viewMenu->addAction(dock->toggleViewAction());
+    w->menuBar()->addMenu(tr("&Tools"))->addAction(compare);
     QMenu* helpMenu = w->menuBar()->addMenu(tr("&Help"));
     helpMenu->addActions({guide, keys});
     helpMenu->addSeparator();

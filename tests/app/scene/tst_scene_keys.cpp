@@ -48,10 +48,13 @@ const QList<OtherFormat> kOtherFormats{
     {"app/output/study_csv.cpp", "the columns of the study CSVs (docs/accuracy-lab.md)", {"dt", "integrator", "steps"}},
     {"app/output/value_format.cpp", "a trace value's kind in the run output (docs/cli.md)", {"quaternion"}},
     {"app/cli/",
-     "rbw's options (--dt, --steps, --integrator, --trace none), the results of `rbw check` and `rbw diagnose`'s JSON "
-     "(a probe's name, the probes, the restitution fitted to a simulator's answers) (docs/cli.md, "
+     "rbw's options (--dt, --steps, --integrator, --trace none, --probes), the results of `rbw check` (docs/cli.md, "
      "docs/simulator-protocol.md)",
-     {"body", "dt", "integrator", "name", "none", "probes", "restitution", "steps"}},
+     {"body", "dt", "integrator", "none", "probes", "steps"}},
+    {"app/simulator/diagnose_report.cpp",
+     "`rbw diagnose`'s JSON: a probe's name, the probes, the body of a divergence, the restitution fitted to a "
+     "simulator's answers (docs/simulator-protocol.md)",
+     {"body", "name", "probes", "restitution"}},
     {"app/exercise/answers_file.cpp", "answers files (docs/checker.md)", {"body"}},
     {"app/exercise/exercise_spec.cpp", "exercise.json's own keys (docs/exercises.md)", {"description"}},
     {"app/derivation/", "the derivation templates' placeholders, {{mass}}, {{body}} (docs/derivation-templates.md)",

@@ -14,6 +14,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct SimulatorRun {
     std::vector<std::vector<double>> answers;   // one per `state`, 9 or 13 finite numbers
     QString failure;                            // when !ok: what went wrong
     QStringList stderrTail;                     // the program's last lines on standard error
+    bool cancelled = false;                     // stopped by `cancel` (failure says so)
 };
 
 struct SimulatorCommand {
@@ -36,9 +38,11 @@ struct SimulatorCommand {
 SimulatorCommand parseSimulatorCommand(const QString& text);
 
 // Runs one probe: `lines` from "reset" to "quit"; `probeNumber` (from 1) and `probeName`
-// only for the messages; `timeoutMs` from the start to the program's exit.
+// only for the messages; `timeoutMs` from the start to the program's exit. `cancel`, when
+// set (from another thread), stops the program within about 50 ms.
 SimulatorRun runSimulatorProbe(const SimulatorCommand& command, const std::vector<std::string>& lines,
-                               int probeNumber, const QString& probeName, int timeoutMs);
+                               int probeNumber, const QString& probeName, int timeoutMs,
+                               const std::atomic<bool>* cancel = nullptr);
 
 // Parses one answer line: 9 or 13 numbers in any format strtod reads, separated by
 // spaces or tabs (a trailing \r is allowed). Empty `error` when it parses; otherwise

@@ -1,4 +1,4 @@
-#include "app/cli/diagnose_report.h"
+#include "app/simulator/diagnose_report.h"
 
 #include "physics/workbook/checker/mistakes.h"
 #include "physics/workbook/probes/probe_models.h"

@@ -1,4 +1,4 @@
-#include "app/cli/simulator_process.h"
+#include "app/simulator/simulator_process.h"
 
 #include <QByteArray>
 #include <QDeadlineTimer>
@@ -73,13 +73,27 @@ void stop(QProcess& p)
     }
 }
 
-// One line of standard output, without its line end; false when the program exited
-// or the deadline passed first.
-bool readAnswer(QProcess& p, const QDeadlineTimer& deadline, QByteArray& line)
+constexpr int kCancelPollMs = 50;   // how often a wait looks at `cancel`
+
+bool isCancelled(const std::atomic<bool>* cancel)
+{
+    return cancel != nullptr && cancel->load();
+}
+
+// At most until the deadline, in slices that look at `cancel`.
+int waitSlice(const QDeadlineTimer& deadline, const std::atomic<bool>* cancel)
+{
+    const qint64 left = std::max<qint64>(0, deadline.remainingTime());
+    return static_cast<int>(cancel != nullptr ? std::min<qint64>(left, kCancelPollMs) : left);
+}
+
+// One line of standard output, without its line end; false when the program exited,
+// the deadline passed or the run was cancelled first.
+bool readAnswer(QProcess& p, const QDeadlineTimer& deadline, const std::atomic<bool>* cancel, QByteArray& line)
 {
     while (!p.canReadLine()) {
-        if (p.state() == QProcess::NotRunning || deadline.hasExpired()) return false;
-        p.waitForReadyRead(static_cast<int>(std::max<qint64>(0, deadline.remainingTime())));
+        if (p.state() == QProcess::NotRunning || deadline.hasExpired() || isCancelled(cancel)) return false;
+        p.waitForReadyRead(waitSlice(deadline, cancel));
     }
     line = p.readLine();
     while (line.endsWith('\n') || line.endsWith('\r')) line.chop(1);
@@ -112,7 +126,8 @@ QStringList lastLines(const QByteArray& text, int n)
 } // namespace
 
 SimulatorRun runSimulatorProbe(const SimulatorCommand& command, const std::vector<std::string>& lines,
-                               int probeNumber, const QString& probeName, int timeoutMs)
+                               int probeNumber, const QString& probeName, int timeoutMs,
+                               const std::atomic<bool>* cancel)
 {
     SimulatorRun run;
     QProcess proc;
@@ -134,6 +149,10 @@ SimulatorRun runSimulatorProbe(const SimulatorCommand& command, const std::vecto
         run.stderrTail = lastLines(proc.readAllStandardError(), 5);
         return run;
     };
+    auto cancelled = [&] {
+        run.cancelled = true;
+        return fail(QStringLiteral("cancelled at %1 (%2); your simulator was stopped").arg(where, probeName));
+    };
 
     proc.start(command.program, command.arguments, QIODevice::ReadWrite);
     if (!proc.waitForStarted(static_cast<int>(std::max<qint64>(1, deadline.remainingTime())))) {
@@ -150,7 +169,8 @@ SimulatorRun runSimulatorProbe(const SimulatorCommand& command, const std::vecto
 
         const QString at = QStringLiteral("at %1, step %2").arg(where).arg(steps);
         QByteArray answer;
-        if (!readAnswer(proc, deadline, answer)) {
+        if (!readAnswer(proc, deadline, cancel, answer)) {
+            if (isCancelled(cancel)) return cancelled();
             if (proc.state() == QProcess::NotRunning) {
                 return fail(QStringLiteral("your simulator %1 %2, before it answered \"%3\" (%4)")
                                 .arg(howItEnded(proc), at, line, probeName));
@@ -172,11 +192,13 @@ SimulatorRun runSimulatorProbe(const SimulatorCommand& command, const std::vecto
 
     // After quit: exit 0, nothing more on standard output.
     proc.closeWriteChannel();
-    if (!proc.waitForFinished(static_cast<int>(std::max<qint64>(1, deadline.remainingTime())))) {
-        if (proc.state() != QProcess::NotRunning) {
-            return fail(QStringLiteral("your simulator did not exit within %1 after \"quit\" at %2 (%3); it was stopped")
-                            .arg(seconds, where, probeName));
-        }
+    do {   // at least one wait, however little time is left
+        proc.waitForFinished(std::max(1, waitSlice(deadline, cancel)));
+    } while (proc.state() != QProcess::NotRunning && !deadline.hasExpired() && !isCancelled(cancel));
+    if (proc.state() != QProcess::NotRunning) {
+        if (isCancelled(cancel)) return cancelled();
+        return fail(QStringLiteral("your simulator did not exit within %1 after \"quit\" at %2 (%3); it was stopped")
+                        .arg(seconds, where, probeName));
     }
     const QByteArray rest = proc.readAllStandardOutput();
     if (!rest.trimmed().isEmpty()) {

@@ -1,6 +1,6 @@
-#include "app/cli/probe_answer_files.h"
+#include "app/simulator/probe_answer_files.h"
 
-#include "app/cli/simulator_process.h"
+#include "app/simulator/simulator_process.h"
 
 #include <QDir>
 #include <QFile>

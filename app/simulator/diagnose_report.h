@@ -10,6 +10,7 @@
 
 #include <QJsonObject>
 #include <QString>
+#include <QStringList>
 #include <QTextStream>
 
 #include <optional>
@@ -28,9 +29,12 @@ struct DiagnoseRun {
     QString sourceKind;   // "simulator", "folder" or "trajectory"
     QString group;        // "motion", "collision", "all" (of the probes in `probes`)
     std::vector<probes::Probe> probes;
+    std::vector<probes::Answers> given;   // the program's answers, one list per probe
     probes::SimulatorDiagnosis diagnosis;
     std::vector<TemplateTestResult> templateTests;   // live runs only
     QString failure;   // the program could not be diagnosed (exit 2); the rest is empty
+    QStringList stderrTail;   // with a failure of the program: its last lines on standard error
+    bool cancelled = false;   // the app's Cancel stopped the run (failure says so)
 };
 
 QJsonObject diagnoseJson(const DiagnoseRun& run);
