@@ -294,7 +294,10 @@ void TestResponsive::goToAFarStepThenCancel()
     QVERIFY(sameSnapshot(w.world()->snapshot(), h.current().state));
     QCOMPARE(over.count(), 0);
     QVERIFY(!scrubber->note()->isVisible());
-    QVERIFY(scrubber->label()->text().startsWith(QStringLiteral("step %1 of %1").arg(k)));   // "(from n)" once the budget drops steps
+    // "(from n = …)" follows once the budget drops steps
+    const QString expectedAtCancel = QStringLiteral("%1 · %2 of %2 steps").arg(steps::stateName(k)).arg(k);
+    QVERIFY2(scrubber->label()->text().startsWith(expectedAtCancel),
+             qPrintable(scrubber->label()->text() + QStringLiteral(" does not start with ") + expectedAtCancel));
     // The recorded steps are the session's own steps (the oldest kept one after step 3).
     const long s = std::max(3L, h.firstStep());
     Session direct;
