@@ -155,6 +155,27 @@ private slots:
         QVERIFY2(m.coincidences.join('\n').contains("restitution = 0.5"), qPrintable(m.coincidences.join('\n')));
     }
 
+    // Negative control: lesson 1's box back at Table 2.1's origin (without the rules that
+    // move it, its force point and probes to x = (1.5, -1, 0.25)): q = p x f = (p - x) x f
+    // and v + w x p = v + w x (p - x), so neither lever-arm mistake can show; moved, both do.
+    void boxAtOriginHidesLeverArm()
+    {
+        rbw::ExerciseSpec spec = lessonSpec("01-one-step");
+        const rbw::ExerciseMistakeReport moved = rbw::measureExerciseMistakes(spec, seeds(20));
+        QVERIFY(modelOf(moved, "lever-arm-from-origin").shownIn.contains("torque (box)"));
+        QVERIFY(modelOf(moved, "point-velocity-lever-arm-from-origin").shownIn.contains("point_velocity (box #1)"));
+        ruleFor(spec, "bodies[0].position");   // the rules exist
+        std::erase_if(spec.vary, [](const rbw::ExerciseVary& v) {
+            return v.paths.contains("bodies[0].position") || v.paths.contains("forces[0].point") ||
+                   v.paths.contains("probes[0].point");
+        });
+        const rbw::ExerciseMistakeReport origin = rbw::measureExerciseMistakes(spec, seeds(20));
+        QVERIFY(origin.errors.isEmpty());
+        QVERIFY(modelOf(origin, "lever-arm-from-origin").shownIn.isEmpty());
+        QVERIFY(modelOf(origin, "point-velocity-lever-arm-from-origin").shownIn.isEmpty());
+        QVERIFY(!modelOf(origin, "torque-reversed").shownIn.isEmpty());   // the measurement still sees the others
+    }
+
     // "avoid" (docs/exercises.md): a number's values that are redrawn. Lesson 1's h from
     // 0.5 .. 2 avoiding 1: over 40 seeds every other value of the grid is drawn, 1 never.
     void avoidIsNeverDrawn()
