@@ -6,13 +6,16 @@
 // may make two models give the same numbers where other draws tell them apart (c = 0.5:
 // -(1 - c) v_rel.n = -c v_rel.n). Negative controls: the same measurement flags exactly
 // those two draws when the generator is allowed to make them. And docs/checker.md's
-// per-lesson section is the measured table, not a claim.
+// per-lesson section is the measured table, not a claim, and so is the "shows in" column
+// of its table of mistake models.
 #include "tests/test_support.h"
 
 #include "app/exercise/exercise.h"
 #include "app/exercise/exercise_mistakes.h"
+#include "physics/workbook/checker/mistakes.h"
 
 #include <QFile>
+#include <QRegularExpression>
 #include <QSaveFile>
 #include <QSet>
 #include <QTemporaryDir>
@@ -58,6 +61,34 @@ const rbw::ModelVisibility& modelOf(const rbw::ExerciseMistakeReport& r, const Q
 
 // The per-lesson section of docs/checker.md: from its heading to the end of the file.
 const char* kSectionHeading = "## Which mistakes each exercise can show";
+// The header of docs/checker.md's table of mistake models; its last column is measured.
+const char* kCatalogueHeader = "| id | the wrong equation | example | shows in (exercises, measured) |";
+
+// "inertia-axes-swapped (variant 1)" -> "inertia-axes-swapped"
+QString catalogueId(const QString& model)
+{
+    const qsizetype at = model.indexOf(" (variant ");
+    return at < 0 ? model : model.left(at);
+}
+
+// The measured "shows in" cell of one model: the exercises in which it (any of its
+// variants) changes some answer in every draw; a several-step model is named by no
+// one-step check (MistakeInfo::oneStep), whatever numbers it gives.
+QString showsInCell(const rbw::MistakeInfo& info, const std::vector<rbw::ExerciseMistakeReport>& reports)
+{
+    if (!info.oneStep) return QStringLiteral("**never in a one-step check** (simulator only)");
+    QStringList lessons;
+    for (const rbw::ExerciseMistakeReport& r : reports) {
+        for (const rbw::ModelVisibility& m : r.models) {
+            if (catalogueId(m.model) == QLatin1String(info.id) && !m.shownIn.isEmpty()) {
+                lessons << r.lessonId.left(r.lessonId.indexOf('-'));
+                break;
+            }
+        }
+    }
+    if (lessons.isEmpty()) return QStringLiteral("no exercise");
+    return (lessons.size() == 1 ? "exercise " : "exercises ") + lessons.join(", ");
+}
 
 } // namespace
 
@@ -65,6 +96,7 @@ class TestExerciseMistakes : public QObject {
     Q_OBJECT
 
     QString measured_;   // the sections of every lesson, in kLessons' order
+    std::vector<rbw::ExerciseMistakeReport> reports_;   // the same measurements
 
 private slots:
     void noDrawHidesAMistake_data()
@@ -85,6 +117,7 @@ private slots:
         QVERIFY2(showing > 0, qPrintable(lesson));
         QVERIFY2(r.failures().isEmpty(), qPrintable(r.failures().join("\n")));
         measured_ += '\n' + r.markdown();
+        reports_.push_back(r);
     }
 
     // Negative control: lesson 1 with h drawn from 0.5 .. 2 (its old range, which holds
@@ -101,7 +134,7 @@ private slots:
         const rbw::ExerciseMistakeReport r = rbw::measureExerciseMistakes(spec, seeds(20));
         const rbw::ModelVisibility& m = modelOf(r, "missing-time-step");
         QVERIFY2(!m.hiddenAt.isEmpty(), "h = 1 was never drawn or not flagged");
-        QVERIFY2(m.hiddenAt.join('\n').contains("dt = 1)"), qPrintable(m.hiddenAt.join('\n')));
+        QVERIFY2(m.hiddenAt.join('\n').contains(QRegularExpression("dt = 1[,)]")), qPrintable(m.hiddenAt.join('\n')));
         QVERIFY(!r.failures().isEmpty());
     }
 
@@ -120,6 +153,27 @@ private slots:
         const rbw::ModelVisibility& m = modelOf(r, "restitution-one-minus");
         QVERIFY2(m.coincidences.join('\n').contains("impulse-without-one-plus"), qPrintable(r.failures().join('\n')));
         QVERIFY2(m.coincidences.join('\n').contains("restitution = 0.5"), qPrintable(m.coincidences.join('\n')));
+    }
+
+    // Negative control: lesson 1's box back at Table 2.1's origin (without the rules that
+    // move it, its force point and probes to x = (1.5, -1, 0.25)): q = p x f = (p - x) x f
+    // and v + w x p = v + w x (p - x), so neither lever-arm mistake can show; moved, both do.
+    void boxAtOriginHidesLeverArm()
+    {
+        rbw::ExerciseSpec spec = lessonSpec("01-one-step");
+        const rbw::ExerciseMistakeReport moved = rbw::measureExerciseMistakes(spec, seeds(20));
+        QVERIFY(modelOf(moved, "lever-arm-from-origin").shownIn.contains("torque (box)"));
+        QVERIFY(modelOf(moved, "point-velocity-lever-arm-from-origin").shownIn.contains("point_velocity (box #1)"));
+        ruleFor(spec, "bodies[0].position");   // the rules exist
+        std::erase_if(spec.vary, [](const rbw::ExerciseVary& v) {
+            return v.paths.contains("bodies[0].position") || v.paths.contains("forces[0].point") ||
+                   v.paths.contains("probes[0].point");
+        });
+        const rbw::ExerciseMistakeReport origin = rbw::measureExerciseMistakes(spec, seeds(20));
+        QVERIFY(origin.errors.isEmpty());
+        QVERIFY(modelOf(origin, "lever-arm-from-origin").shownIn.isEmpty());
+        QVERIFY(modelOf(origin, "point-velocity-lever-arm-from-origin").shownIn.isEmpty());
+        QVERIFY(!modelOf(origin, "torque-reversed").shownIn.isEmpty());   // the measurement still sees the others
     }
 
     // "avoid" (docs/exercises.md): a number's values that are redrawn. Lesson 1's h from
@@ -189,6 +243,61 @@ private slots:
             }
         }
         QCOMPARE(section, expected.trimmed());
+    }
+
+    // docs/checker.md's table of mistake models: one row per model of the catalogue, and
+    // its last column is the measurement above (showsInCell), not a claim.
+    void catalogueTableAgrees()
+    {
+        if (reports_.size() != std::size_t(kLessons.size())) QSKIP("run with noDrawHidesAMistake");
+        QFile f(QStringLiteral(RBW_SOURCE_DIR "/docs/checker.md"));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QString doc = QString::fromUtf8(f.readAll());
+        f.close();
+        QStringList lines = doc.split('\n');
+        const qsizetype header = lines.indexOf(QString::fromUtf8(kCatalogueHeader));
+        QVERIFY2(header >= 0, "docs/checker.md has no table of mistake models with a measured column");
+        QStringList differ;
+        QSet<QString> rows;
+        for (qsizetype i = header + 2; i < lines.size() && lines[i].startsWith("| `"); ++i) {
+            QString& row = lines[i];
+            const QString id = row.section('`', 1, 1);
+            const rbw::MistakeInfo* info = rbw::findMistake(id.toStdString());
+            QVERIFY2(info, qPrintable("docs/checker.md: no mistake model " + id));
+            QVERIFY2(!rows.contains(id), qPrintable("docs/checker.md: two rows for " + id));
+            rows.insert(id);
+            QVERIFY2(row.endsWith(" |"), qPrintable(row));
+            const QString body = row.left(row.size() - 2);
+            const qsizetype last = body.lastIndexOf(" | ");
+            const QString cell = showsInCell(*info, reports_);
+            if (body.mid(last + 3) != cell) {
+                differ << QString("%1: \"%2\" should be \"%3\"").arg(id, body.mid(last + 3), cell);
+                row = body.left(last) + " | " + cell + " |";
+            }
+        }
+        // Not vacuous: every model of the catalogue has its row.
+        QCOMPARE(rows.size(), qsizetype(rbw::mistakeCatalogue().size()));
+        if (!differ.isEmpty() && qEnvironmentVariableIsSet("RBW_UPDATE_CHECKER_DOC")) {
+            QSaveFile out(f.fileName());
+            QVERIFY(out.open(QIODevice::WriteOnly));
+            out.write(lines.join('\n').toUtf8());
+            QVERIFY(out.commit());
+        }
+        QVERIFY2(differ.isEmpty(), qPrintable("docs/checker.md's \"shows in\" column:\n" + differ.join('\n')));
+    }
+
+    // Negative control: a model's cell names exactly the exercises whose section shows it
+    // (lesson 3's impulse-linear-only: exercises 03, 06, 07, measured above), and a
+    // several-step model is never placed in an exercise although it changes numbers there
+    // (gravity-always-on changes lesson 1's force).
+    void showsInCellIsTheMeasurement()
+    {
+        if (reports_.size() != std::size_t(kLessons.size())) QSKIP("run with noDrawHidesAMistake");
+        QCOMPARE(showsInCell(*rbw::findMistake("impulse-linear-only"), reports_), QString("exercises 03, 06, 07"));
+        QVERIFY(!modelOf(reports_.front(), "gravity-always-on").shownIn.isEmpty());
+        QCOMPARE(showsInCell(*rbw::findMistake("gravity-always-on"), reports_),
+                 QString("**never in a one-step check** (simulator only)"));
+        QCOMPARE(showsInCell(*rbw::findMistake("omega-accumulated"), reports_), QString("no exercise"));
     }
 
 private:
