@@ -157,6 +157,7 @@ bool StepStates::prepare(std::vector<long> steps, QString* error)
     steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
     steps.erase(std::remove_if(steps.begin(), steps.end(), [this](long k) { return has(k); }), steps.end());
     if (steps.empty()) return true;
+    ++simulations_;
     World world(scene_);
     size_t next = 0;
     for (long k = 0; k <= steps.back(); ++k) {

@@ -64,6 +64,9 @@ public:
     const StepTrace& trace(long step) const { return states_.at(step).trace; }
     // A world standing before `step` (a fresh world restored from the snapshot).
     std::unique_ptr<World> worldBefore(long step) const;
+    // How many runs from t = 0 prepare() has made (one per call that needed a new step):
+    // what a marking sheet costs (tst_step_states).
+    int simulations() const { return simulations_; }
 
 private:
     struct State {
@@ -72,6 +75,7 @@ private:
     };
     SceneDef scene_;
     std::map<long, State> states_;
+    int simulations_ = 0;
 };
 
 // A hint for a checked answer that shows an input slip, or empty: a wrong quaternion
