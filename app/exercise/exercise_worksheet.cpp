@@ -94,9 +94,12 @@ QString contactName(const SceneDef& s, const StepTrace& t, int k)
 QString startStateOf(const GeneratedExercise& g)
 {
     if (g.answerStep == 0 || g.startStates.size() != g.scene->bodies.size()) return QString();
+    // "after step 0" for step 1, "after steps 0 to 4" for step 5
+    const QString after = g.answerStep == 1 ? QStringLiteral("after step 0")
+                                            : QStringLiteral("after steps 0 to %1").arg(g.answerStep - 1);
     QString html = "<p>The state at the start of step " + QString::number(g.answerStep) + " (t = " +
-                   QString::number(g.answerStep * g.scene->dt, 'g', 10) + " s), as the simulation has it after steps 0 to " +
-                   QString::number(g.answerStep - 1) + ":</p>\n<table width=\"100%\" style=\"font-size:9pt\">\n<tr><th width=\"18%\">body</th>"
+                   QString::number(g.answerStep * g.scene->dt, 'g', 10) + " s), as the simulation has it " + after +
+                   ":</p>\n<table width=\"100%\" style=\"font-size:9pt\">\n<tr><th width=\"18%\">body</th>"
                    "<th width=\"82%\">position x (m), orientation r [w, x, y, z], velocity v (m/s), angular momentum L "
                    "(kg m²/s), angular velocity ω (rad/s)</th></tr>\n";
     for (size_t b = 0; b < g.startStates.size(); ++b) {
