@@ -6,7 +6,10 @@
 #include "app/scene/scene_loader.h"
 #include "app/scene/scene_format.h"
 #include "physics/engine/quantity_catalogue.h"
+#include "physics/engine/quantities.h"
 #include "physics/engine/world.h"
+#include "physics/workbook/checker/checker.h"
+#include "physics/workbook/checker/follow_through.h"
 
 #include <QJsonArray>
 
@@ -67,7 +70,11 @@ QString runCandidate(const ExerciseSpec& spec, const SceneDef& scene, GeneratedE
         std::vector<BodyState> before = haveAnswer ? std::vector<BodyState>() : world.states();
         const StepStatus status = world.step(&trace);
         if (!status.ok) return "the scene blows up in step " + QString::number(k) + ": " + QString::fromStdString(status.message);
-        const bool answerHere = spec.answerAtFirstContact ? !trace.contacts.empty() : k == spec.answerStep;
+        const bool separating = std::any_of(trace.contacts.begin(), trace.contacts.end(),
+                                            [](const ContactHeader& c) { return c.separating; });
+        const bool answerHere = spec.answerAtFirstContact      ? !trace.contacts.empty()
+                                : spec.answerAtFirstSeparating ? separating
+                                                               : k == spec.answerStep;
         if (answerHere && !haveAnswer) {
             haveAnswer = true;
             g.answerStep = k;
@@ -89,7 +96,9 @@ QString runCandidate(const ExerciseSpec& spec, const SceneDef& scene, GeneratedE
     }
     if (!haveAnswer) {
         return spec.answerAtFirstContact ? "no contact in the scene's " + QString::number(scene.steps) + " steps"
-                                         : "the scene has no step " + QString::number(spec.answerStep);
+               : spec.answerAtFirstSeparating
+                   ? "no separating contact (v_rel.n > 0) in the scene's " + QString::number(scene.steps) + " steps"
+                   : "the scene has no step " + QString::number(spec.answerStep);
     }
     for (size_t r = 0; r < spec.require.size(); ++r) {
         const ExerciseRequire& req = spec.require[r];
@@ -104,6 +113,39 @@ QString runCandidate(const ExerciseSpec& spec, const SceneDef& scene, GeneratedE
         }
     }
     return QString();
+}
+
+// The answer table: the trace entries with the exercise's ids, in trace order. A
+// separating contact (v_rel . n > 0) records no impulse; when the table asks for J, its
+// row is the checker's own expectation for it (J = 0, checker.h: expectedValue), after
+// the contact's last entry, so that the key says "no impulse" and a student who applies
+// one anyway (no-separating-check) differs from it.
+std::vector<TraceEntry> keyEntries(const ExerciseSpec& spec, const StepTrace& trace)
+{
+    // where each contact's entries end in the trace
+    std::vector<size_t> lastEntry(trace.contacts.size(), trace.entries.size());
+    for (size_t i = 0; i < trace.entries.size(); ++i) {
+        const TraceEntry& e = trace.entries[i];
+        if (e.info->indexKind == IndexKind::Contact && e.index >= 0 && e.index < static_cast<int>(lastEntry.size())) {
+            lastEntry[e.index] = i;
+        }
+    }
+    const bool asksImpulse = spec.quantities.contains(QLatin1String(q::impulse.id));
+    std::vector<TraceEntry> key;
+    for (size_t i = 0; i < trace.entries.size(); ++i) {
+        const TraceEntry& e = trace.entries[i];
+        if (spec.quantities.contains(QLatin1String(e.info->id))) key.push_back(e);
+        if (!asksImpulse || e.info->indexKind != IndexKind::Contact || lastEntry[e.index] != i) continue;
+        Answer a;
+        a.quantity = q::impulse.id;
+        a.contact = e.index;
+        const bool recorded = checking::traceEntryOf(trace, checking::AnswerKey{q::impulse.id, -1, e.index, -1}) != nullptr;
+        const std::vector<double> J = expectedValue(trace, a);
+        if (!recorded && J.size() == 1) {
+            key.push_back(TraceEntry{&q::impulse, trace.contacts[e.index].bodyA, e.index, J[0], std::source_location()});
+        }
+    }
+    return key;
 }
 
 } // namespace
@@ -137,9 +179,7 @@ GeneratedExercise generateExercise(const ExerciseSpec& spec, std::uint64_t seed)
         candidate.sceneJson = bytes;
         candidate.scene = std::move(loaded.scene);
         candidate.attempt = attempt;
-        for (const TraceEntry& e : candidate.answerTrace.entries) {
-            if (spec.quantities.contains(QLatin1String(e.info->id))) candidate.key.push_back(e);
-        }
+        candidate.key = keyEntries(spec, candidate.answerTrace);
         return candidate;
     }
     g.errors << spec.file + ": vary: no scene out of " + QString::number(spec.attempts) + " sub-seeds of seed " +

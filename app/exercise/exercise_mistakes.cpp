@@ -49,13 +49,16 @@ QString partName(const SceneDef& s, int body, int plane)
     return QStringLiteral("?");
 }
 
-// "angular_momentum (box)", "impulse (A–B)": a body's name or a contact's pair.
+// "angular_momentum (box)", "impulse (A–B)": a body's name or a contact's pair; a
+// separating contact's (v_rel . n > 0, J = 0) is a row of its own, "impulse (edge–ground,
+// separating)", since the impulse models that check separation give its right J = 0.
 QString rowOf(const SceneDef& s, const StepTrace& t, const TraceEntry& e)
 {
     const QString id = QString::fromLatin1(e.info->id);
     if (e.info->indexKind == IndexKind::Contact) {
         const ContactHeader& c = t.contacts[e.index];
-        return id + " (" + partName(s, c.bodyA, -1) + QStringLiteral("–") + partName(s, c.bodyB, c.plane) + ")";
+        return id + " (" + partName(s, c.bodyA, -1) + QStringLiteral("–") + partName(s, c.bodyB, c.plane) +
+               (c.separating ? QStringLiteral(", separating)") : QStringLiteral(")"));
     }
     QString who = e.body >= 0 ? partName(s, e.body, -1) : QString();
     if (e.index >= 0) who += (who.isEmpty() ? "#" : " #") + QString::number(e.index);

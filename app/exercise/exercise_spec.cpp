@@ -31,10 +31,19 @@ std::optional<QString> resolveLessonFolder(const QString& lesson, QString* error
     if (asPath.isDir()) return QDir::cleanPath(asPath.filePath());
     const QString dir = lessonsDirectory();
     const QFileInfo asId(QDir(dir).filePath(lesson));
-    if (!lesson.isEmpty() && !lesson.contains('/') && asId.isDir()) return QDir::cleanPath(asId.filePath());
+    // "06-box-on-plane" or a lesson's further exercise in a folder of its own,
+    // "06-box-on-plane/separating" (never "..": an id stays inside the lessons)
+    const QStringList parts = lesson.split('/');
+    const bool idForm = !lesson.isEmpty() && parts.size() <= 2 && !parts.contains(QString()) &&
+                        !parts.contains(QStringLiteral(".")) && !parts.contains(QStringLiteral(".."));
+    if (idForm && asId.isDir()) return QDir::cleanPath(asId.filePath());
     QStringList known;
     for (const QString& id : QDir(dir).entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name)) {
         if (QFile::exists(QDir(dir).filePath(id + "/exercise.json"))) known << id;
+        const QDir lessonDir(QDir(dir).filePath(id));
+        for (const QString& sub : lessonDir.entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name)) {
+            if (QFile::exists(lessonDir.filePath(sub + "/exercise.json"))) known << id + '/' + sub;
+        }
     }
     *error = lesson + ": LESSON: no lesson folder of that name (lessons with exercises: " + known.join(", ") + ")";
     return std::nullopt;
@@ -54,6 +63,10 @@ ExerciseLoadResult loadExercise(const QString& lesson)
     ExerciseSpec spec;
     spec.file = QDir(*folder).filePath(QStringLiteral("exercise.json"));
     spec.lessonId = QFileInfo(*folder).fileName();
+    // A lesson's further exercise (a folder inside the lesson's): "06-box-on-plane/separating"
+    if (const QDir parent = QFileInfo(*folder).dir(); QFile::exists(parent.filePath(QStringLiteral("lesson.md")))) {
+        spec.lessonId = parent.dirName() + '/' + spec.lessonId;
+    }
     QFile file(spec.file);
     if (!file.open(QIODevice::ReadOnly)) {
         result.errors << fmt(spec, "(file)", "cannot open: " + file.errorString() + " (this lesson has no exercise)");
@@ -262,16 +275,18 @@ ExerciseLoadResult loadExercise(const QString& lesson)
         spec.require.push_back(req);
     }
 
-    // step: a whole number k, or "first-contact"
+    // step: a whole number k, "first-contact" or "first-separating"
     const QJsonValue stepValue = o.value("step");
     if (stepValue.isString() && stepValue.toString() == "first-contact") {
         spec.answerAtFirstContact = true;
+    } else if (stepValue.isString() && stepValue.toString() == "first-separating") {
+        spec.answerAtFirstSeparating = true;
     } else if (stepValue.isUndefined()) {
         spec.answerStep = 0;
     } else if (stepValue.isDouble() && stepValue.toDouble() >= 0 && stepValue.toDouble() == std::floor(stepValue.toDouble())) {
         spec.answerStep = static_cast<long>(stepValue.toDouble());
     } else {
-        errors << fmt(spec, "step", "must be a whole number >= 0 or \"first-contact\"");
+        errors << fmt(spec, "step", "must be a whole number >= 0, \"first-contact\" or \"first-separating\"");
     }
     // quantities: the trace ids of the answer table
     const QJsonArray quantities = o.value("quantities").toArray();

@@ -33,12 +33,15 @@ struct ExerciseRequire {
 
 struct ExerciseSpec {
     QString file;                // .../exercise.json
-    QString lessonId;            // the folder name, "01-one-step"
+    QString lessonId;            // the folder name, "01-one-step"; a lesson's further exercise
+                                 // (a folder inside the lesson's): "06-box-on-plane/separating"
     QString scenePath;           // the base scene
     QJsonObject scene;           // the base scene's document
     std::vector<ExerciseVary> vary;
     std::vector<ExerciseRequire> require;
     bool answerAtFirstContact = false;  // "step": "first-contact"
+    bool answerAtFirstSeparating = false;  // "step": "first-separating": the first step with a
+                                           // separating contact (v_rel . n > 0: no impulse)
     long answerStep = 0;                // else the step k whose numbers the worksheet asks for
     QStringList quantities;             // trace ids for the answer table, in trace order
     QString task;                       // one sentence for the worksheet
@@ -52,8 +55,10 @@ struct ExerciseLoadResult {
     bool ok() const { return spec.has_value(); }
 };
 
-// LESSON is a lesson id ("01-one-step", looked up in lessonsDirectory()) or a lesson
-// folder path. Reads and checks LESSON/exercise.json and its scene.
+// LESSON is a lesson id ("01-one-step", looked up in lessonsDirectory()), a lesson's
+// further exercise ("06-box-on-plane/separating": a folder inside the lesson's, whose
+// exercise.json names the lesson's scene as "../scene.json") or a folder path. Reads and
+// checks LESSON/exercise.json and its scene.
 ExerciseLoadResult loadExercise(const QString& lesson);
 
 } // namespace rbw

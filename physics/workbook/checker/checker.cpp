@@ -41,13 +41,6 @@ bool separatingImpulse(const StepTrace& t, const Answer& a)
            t.contacts[a.contact].separating;
 }
 
-Values expectedOf(const StepTrace& t, const Answer& a)
-{
-    const TraceEntry* e = checking::traceEntryOf(t, keyOf(a));
-    if (e != nullptr) return traceValueComponents(e->value);
-    return separatingImpulse(t, a) ? Values{0.0} : Values{};
-}
-
 // "torque", "torque and angular_momentum", "torque, I0 and r"
 std::string listed(const std::vector<std::string>& names)
 {
@@ -107,6 +100,13 @@ std::string wrongText(const AnswerResult& r, const World& w, const Answer& a)
 
 } // namespace
 
+std::vector<double> expectedValue(const StepTrace& trace, const Answer& a)
+{
+    const TraceEntry* e = checking::traceEntryOf(trace, keyOf(a));
+    if (e != nullptr) return traceValueComponents(e->value);
+    return separatingImpulse(trace, a) ? Values{0.0} : Values{};
+}
+
 std::string answerProblem(const StepTrace& trace, const Answer& a)
 {
     const QuantityInfo* info = findQuantity(a.quantity);
@@ -117,7 +117,7 @@ std::string answerProblem(const StepTrace& trace, const Answer& a)
         return "no contact " + std::to_string(a.contact) + " in step " + std::to_string(trace.step) + " (it has " +
                std::to_string(trace.contacts.size()) + ")";
     }
-    const Values expected = expectedOf(trace, a);
+    const Values expected = expectedValue(trace, a);
     if (expected.empty()) {
         return "the workbook has no " + a.quantity + (a.index >= 0 ? " " + std::to_string(a.index) : std::string()) +
                " for this " + (a.contact >= 0 ? "contact" : "body") + " in step " + std::to_string(trace.step);
@@ -141,7 +141,7 @@ std::vector<AnswerResult> checkAnswers(const World& before, const StepTrace& tra
     // In the file's order: the answers above one are its earlier answers.
     for (const Answer& a : answers) {
         AnswerResult r;
-        r.expected = expectedOf(trace, a);
+        r.expected = expectedValue(trace, a);
         const AnswerKey key = keyOf(a);
         checking::GivenAnswer given{a.value, Values(a.value.size(), relTol * checking::maxAbs(a.value)), false, {}};
         const bool right = checking::matches(a.value, r.expected, relTol);

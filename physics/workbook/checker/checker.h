@@ -59,6 +59,12 @@ struct AnswerResult {
     std::string explanation;              // one or two sentences for the student
 };
 
+// The workbook's number for an answer (flattened): its trace entry's value, or J = 0 for
+// the impulse of a separating contact (v_rel . n > 0: no impulse, which the trace does not
+// record); empty when the step has no such number. What every answer is checked against,
+// and what an exercise's key writes for a separating contact (app/exercise/exercise_draw.h).
+std::vector<double> expectedValue(const StepTrace& trace, const Answer& a);
+
 // The problems of an answer that cannot be checked at all (unknown quantity, no such
 // body or contact in this step, wrong number of components); empty when it can.
 std::string answerProblem(const StepTrace& trace, const Answer& a);

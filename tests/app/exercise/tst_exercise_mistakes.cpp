@@ -12,6 +12,8 @@
 
 #include "app/exercise/exercise.h"
 #include "app/exercise/exercise_mistakes.h"
+#include "physics/engine/world.h"
+#include "physics/workbook/checker/checker.h"
 #include "physics/workbook/checker/mistakes.h"
 
 #include <QFile>
@@ -25,7 +27,17 @@
 
 namespace {
 
-const QStringList kLessons{"01-one-step", "03-two-box-collision", "06-box-on-plane", "07-bounce", "08-conventions"};
+// 06-box-on-plane/separating: lesson 6's further exercise, the first step with a separating
+// contact (J = 0), where no-separating-check shows.
+const QStringList kLessons{"01-one-step",    "03-two-box-collision", "06-box-on-plane", "06-box-on-plane/separating",
+                           "07-bounce",      "08-conventions"};
+
+// "06-box-on-plane" -> "06", "06-box-on-plane/separating" -> "06/separating"
+QString exerciseName(const QString& lessonId)
+{
+    const qsizetype slash = lessonId.indexOf('/');
+    return lessonId.left(lessonId.indexOf('-')) + (slash < 0 ? QString() : lessonId.mid(slash));
+}
 
 std::vector<std::uint64_t> seeds(int n)
 {
@@ -81,7 +93,7 @@ QString showsInCell(const rbw::MistakeInfo& info, const std::vector<rbw::Exercis
     for (const rbw::ExerciseMistakeReport& r : reports) {
         for (const rbw::ModelVisibility& m : r.models) {
             if (catalogueId(m.model) == QLatin1String(info.id) && !m.shownIn.isEmpty()) {
-                lessons << r.lessonId.left(r.lessonId.indexOf('-'));
+                lessons << exerciseName(r.lessonId);
                 break;
             }
         }
@@ -287,17 +299,67 @@ private slots:
     }
 
     // Negative control: a model's cell names exactly the exercises whose section shows it
-    // (lesson 3's impulse-linear-only: exercises 03, 06, 07, measured above), and a
+    // (lesson 3's impulse-linear-only: exercises 03, 06, 06/separating, 07, measured above), and a
     // several-step model is never placed in an exercise although it changes numbers there
     // (gravity-always-on changes lesson 1's force).
     void showsInCellIsTheMeasurement()
     {
         if (reports_.size() != std::size_t(kLessons.size())) QSKIP("run with noDrawHidesAMistake");
-        QCOMPARE(showsInCell(*rbw::findMistake("impulse-linear-only"), reports_), QString("exercises 03, 06, 07"));
+        QCOMPARE(showsInCell(*rbw::findMistake("impulse-linear-only"), reports_), QString("exercises 03, 06, 06/separating, 07"));
+        // Only a separating contact shows a forgotten separation check (J = 0 is right there).
+        QCOMPARE(showsInCell(*rbw::findMistake("no-separating-check"), reports_), QString("exercise 06/separating"));
         QVERIFY(!modelOf(reports_.front(), "gravity-always-on").shownIn.isEmpty());
         QCOMPARE(showsInCell(*rbw::findMistake("gravity-always-on"), reports_),
                  QString("**never in a one-step check** (simulator only)"));
         QCOMPARE(showsInCell(*rbw::findMistake("omega-accumulated"), reports_), QString("no exercise"));
+    }
+
+    // The separating exercise's key (lesson 6's further exercise, seed 1): step 33, the
+    // edge cube (unit cube, M = 2.5, c = 0.7) has bounced and its corner is still below the
+    // ground, moving up: v_rel.n = 0.729025 > 0, so the key's J is 0 (the checker's own
+    // expectation, checker.h: expectedValue), and J = 0 written by a student is correct.
+    // Forgetting the check: I^-1 = (6/M) E = 2.4 E for a cube at any orientation,
+    // x_a = (0, -0.718154, -0.483999), n = (0, 1, 0), x_a x n = (0.483999, 0, 0),
+    // [(I^-1 (x_a x n)) x x_a].n = 2.4 * 0.483999^2 = 0.562211,
+    // J = -(1 + 0.7) * 0.729025 / (1/2.5 + 0.562211) = -1.239343 / 0.962211 = -1.288016:
+    // the checker names no-separating-check for it.
+    void separatingKeyIsZeroAndTheModelIsNamed()
+    {
+        const rbw::GeneratedExercise g = rbw::generateExercise(lessonSpec("06-box-on-plane/separating"), 1);
+        QVERIFY2(g.ok(), qPrintable(g.errors.join('\n')));
+        QCOMPARE(g.answerStep, 33L);
+        std::vector<rbw::Answer> answers = rbw::exerciseAnswers(g);
+        const auto J = std::find_if(answers.begin(), answers.end(), [](const rbw::Answer& a) {
+            return a.quantity == "impulse" && a.contact == 0;
+        });
+        QVERIFY(J != answers.end());
+        QVERIFY(g.answerTrace.contacts[0].separating);
+        QCOMPARE(g.scene->bodies[g.answerTrace.contacts[0].bodyA].name, std::string("edge"));
+        QCOMPARE(J->value, std::vector<double>{0.0});
+        // the key's J comes after the contact's v_rel.n, as a student computes it
+        QVERIFY(J != answers.begin() && std::prev(J)->quantity == "normal_velocity");
+        QVERIFY(std::abs(std::prev(J)->value[0] - 0.729025) < 1e-6);
+        rbw::World before(*g.scene);
+        while (before.stepIndex() < g.answerStep) QVERIFY(before.step().ok);
+        // the key as the student's answers: every one correct, J = 0 included
+        for (const rbw::AnswerResult& r : rbw::checkAnswers(before, g.answerTrace, answers)) {
+            QCOMPARE(r.verdict, rbw::Verdict::Correct);
+        }
+        // the impulse applied anyway
+        J->value = {-1.288016};
+        const std::vector<rbw::AnswerResult> results = rbw::checkAnswers(before, g.answerTrace, answers);
+        const rbw::AnswerResult& r = results[std::size_t(J - answers.begin())];
+        QCOMPARE(r.verdict, rbw::Verdict::Wrong);
+        QCOMPARE(r.expected, std::vector<double>{0.0});
+        QStringList named;
+        for (const char* id : r.mistakes) named << id;
+        QVERIFY2(named == QStringList{"no-separating-check"}, qPrintable(named.join(", ") + " / " +
+                                                                        QString::fromStdString(r.explanation)));
+        // Negative control: J = 1 (no model gives it) names nothing.
+        J->value = {1.0};
+        const rbw::AnswerResult other = rbw::checkAnswers(before, g.answerTrace, answers)[std::size_t(J - answers.begin())];
+        QCOMPARE(other.verdict, rbw::Verdict::Wrong);
+        QVERIFY(other.mistakes.empty());
     }
 
 private:
@@ -312,7 +374,8 @@ private:
             "in a quantity where other draws show it, or when a draw makes two models give the same\n"
             "numbers where other draws tell them apart. \"Shows in\": the exercise's answers in which\n"
             "the model gives another number than the right one in every draw (a quantity, its body\n"
-            "or its contact's pair). \"The same numbers as\": models it cannot be told apart from in\n"
+            "or its contact's pair; a separating contact's answers, whose right J is 0, are rows of\n"
+            "their own). \"The same numbers as\": models it cannot be told apart from in\n"
             "that exercise (every answer the same in every draw). \"Cannot show\": models that give\n"
             "the right number in every answer of every draw.\n");
     }
