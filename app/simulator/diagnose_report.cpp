@@ -1,5 +1,6 @@
 #include "app/simulator/diagnose_report.h"
 
+#include "app/core/step_numbering.h"
 #include "physics/workbook/checker/mistakes.h"
 #include "physics/workbook/probes/probe_models.h"
 
@@ -7,7 +8,6 @@
 #include <QStringList>
 
 #include <algorithm>
-#include <QStringList>
 
 namespace rbw {
 
@@ -222,8 +222,8 @@ void writeDiagnoseText(QTextStream& out, const DiagnoseRun& run)
     if (d.firstDivergence) {
         const probes::Divergence& f = *d.firstDivergence;
         out << "first divergence from the right algorithm: probe " << d.divergenceProbe + 1 << " ("
-            << QString::fromStdString(run.probes[d.divergenceProbe].name) << "), step " << f.step << ", body "
-            << f.body << ", " << QString::fromStdString(f.quantity) << ": expected " << numbers(f.expected)
+            << QString::fromStdString(run.probes[d.divergenceProbe].name) << "), " << steps::stateName(f.step)
+            << ", body " << f.body << ", " << QString::fromStdString(f.quantity) << ": expected " << numbers(f.expected)
             << ", yours " << numbers(f.given) << '\n';
     }
     out << "probes:\n";

@@ -1,6 +1,7 @@
 #include "app/simulator/probe_answer_files.h"
 
 #include "app/simulator/simulator_process.h"
+#include "app/core/step_numbering.h"
 
 #include <QDir>
 #include <QFile>
@@ -38,13 +39,14 @@ std::optional<QList<QByteArray>> readLines(const QString& path, QString& error)
     return lines;
 }
 
-// "probe 2 (motion-02), step 1, its answer to \"state 0\""
+// "probe 2 (motion-02), after step k = 0, its answer to \"state 0\"": the answer after
+// s.step steps, worded as every screen words a state (step_numbering.h)
 QString slotText(int probeNumber, const probes::Probe& p, const probes::AnswerSlot& s)
 {
-    return QStringLiteral("probe %1 (%2), step %3, its answer to \"state %4\"")
+    return QStringLiteral("probe %1 (%2), %3, its answer to \"state %4\"")
         .arg(probeNumber)
         .arg(QString::fromStdString(p.name))
-        .arg(s.step)
+        .arg(steps::stateName(s.step))
         .arg(s.body);
 }
 
@@ -178,11 +180,13 @@ OfflineAnswers readTrajectoryCsv(const QString& file, std::optional<probes::Prob
         const int step = fields[1].trimmed().toInt(&stepOk);
         const int body = fields[2].trimmed().toInt(&bodyOk);
         if (!stepOk || !bodyOk || step != slot.step || body != slot.body) {
-            return failure(at + QStringLiteral(": step \"%1\", body \"%2\"; the next answer of %3 is step %4, body %5 "
-                                               "(rows in the order of the probe's state commands)")
+            // the step column counts the steps taken, n; in words the state after step k = n - 1
+            return failure(at + QStringLiteral(": step \"%1\", body \"%2\"; the next answer of %3 has step %4 (the state %5), "
+                                               "body %6 (rows in the order of the probe's state commands)")
                                     .arg(QString::fromUtf8(fields[1]), QString::fromUtf8(fields[2]),
                                          QString::fromStdString(name))
                                     .arg(slot.step)
+                                    .arg(steps::stateName(slot.step))
                                     .arg(slot.body));
         }
         // the quaternion's four fields are all given or all empty

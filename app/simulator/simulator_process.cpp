@@ -1,5 +1,7 @@
 #include "app/simulator/simulator_process.h"
 
+#include "app/core/step_numbering.h"
+
 #include <QByteArray>
 #include <QDeadlineTimer>
 #include <QProcess>
@@ -167,7 +169,8 @@ SimulatorRun runSimulatorProbe(const SimulatorCommand& command, const std::vecto
         if (line.startsWith(QLatin1String("step "))) ++steps;
         if (!line.startsWith(QLatin1String("state "))) continue;
 
-        const QString at = QStringLiteral("at %1, step %2").arg(where).arg(steps);
+        // the answer after `steps` steps, worded as every screen words it (step_numbering.h)
+        const QString at = QStringLiteral("at %1, %2").arg(where, steps::stateName(steps));
         QByteArray answer;
         if (!readAnswer(proc, deadline, cancel, answer)) {
             if (isCancelled(cancel)) return cancelled();

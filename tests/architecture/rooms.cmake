@@ -20,7 +20,7 @@ rbw_room(app/scene                 MAY_INCLUDE physics/engine app/output)
 rbw_room(app/core                  MAY_INCLUDE physics/engine app/scene)
 rbw_room(app/exercise              MAY_INCLUDE physics app/core app/output app/scene)
 rbw_room(app/derivation            MAY_INCLUDE physics app/core app/output)
-rbw_room(app/simulator             MAY_INCLUDE physics)
+rbw_room(app/simulator             MAY_INCLUDE physics app/core)
 rbw_room(app/cli                   MAY_INCLUDE physics app/core app/output app/scene app/exercise app/derivation
                                                app/simulator)
 
@@ -33,7 +33,7 @@ rbw_room(app/gui/panels/plots      MAY_INCLUDE physics app/core app/output app/g
 rbw_room(app/gui/panels/accuracy   MAY_INCLUDE physics app/core app/output app/exercise)
 rbw_room(app/gui/panels/check      MAY_INCLUDE physics app/core app/output app/exercise)
 rbw_room(app/gui/panels/editor     MAY_INCLUDE physics/engine app/scene)
-rbw_room(app/gui/panels/simulator  MAY_INCLUDE physics app/simulator)
+rbw_room(app/gui/panels/simulator  MAY_INCLUDE physics app/core app/simulator)
 rbw_room(app/gui/shell             MAY_INCLUDE physics app)
 
 # The student's side of the simulator protocol: it stands in for a student's own code,

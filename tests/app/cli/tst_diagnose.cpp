@@ -135,8 +135,35 @@ private slots:
         const QString out = QString::fromUtf8(r.out);
         QVERIFY2(out.contains("verdict: explained"), qPrintable(out));
         QVERIFY2(out.contains("lever-arm-from-origin: q = p x f"), qPrintable(out));
-        QVERIFY2(out.contains("first divergence from the right algorithm: probe 1 (motion-01), step 1"), qPrintable(out));
+        QVERIFY2(out.contains("first divergence from the right algorithm: probe 1 (motion-01), after step k = 0, body 0"),
+                 qPrintable(out));
         QVERIFY2(out.contains("within 0.0001"), qPrintable(out));
+    }
+
+    // Issue 23: the report words a state as every screen of the app does
+    // (app/core/step_numbering.h: steps k = 0, 1, ...; the state after n steps is "after
+    // step k = n - 1"), while the JSON keeps its number, the steps taken n
+    // (docs/simulator-protocol.md). The old words said "step 1" for the state after one
+    // step, the app's step k = 0: this fails on them.
+    void stepWordsAreTheApps()
+    {
+        const QString sim = kReference + " --mistake missing-time-step";
+        const rbw::test::RbwRun json = rbw::test::runRbw({"diagnose", "--probes", "motion", "--format", "json", "--simulator", sim});
+        const rbw::test::RbwRun text = rbw::test::runRbw({"diagnose", "--probes", "motion", "--simulator", sim});
+        QCOMPARE(json.exitCode, 1);
+        QCOMPARE(text.exitCode, 1);
+        const QJsonObject f = QJsonDocument::fromJson(json.out).object().value("first_divergence").toObject();
+        const int n = f.value("step").toInt();
+        QVERIFY2(n >= 1, json.out.constData());   // a missing h shows after a step, not before any
+        const QString out = QString::fromUtf8(text.out);
+        const QString where = QStringLiteral("probe %1 (%2), after step k = %3, body %4")
+                                  .arg(f.value("probe").toInt())
+                                  .arg(f.value("probe_name").toString())
+                                  .arg(n - 1)
+                                  .arg(f.value("body").toInt());
+        QVERIFY2(out.contains("first divergence from the right algorithm: " + where), qPrintable(out));
+        // negative control: the old wording, the count of steps as a step number
+        QVERIFY2(!out.contains(QStringLiteral("), step %1, body").arg(n)), qPrintable(out));
     }
 
 };

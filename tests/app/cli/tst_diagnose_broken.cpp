@@ -33,19 +33,19 @@ private slots:
             "  esac\n"
             "done\n");
         QTest::newRow("nan") << loop.arg("state) echo \"1 2 3 4 5 6 nan 8 9\";;")
-                             << "your simulator printed nan at probe 1, step 1 (motion-01: its answer to \"state 0\"";
+                             << "your simulator printed nan at probe 1, after step k = 0 (motion-01: its answer to \"state 0\"";
         QTest::newRow("exits") << loop.arg("step) echo dying >&2; exit 3;;")
-                               << "your simulator exited with status 3 at probe 1, step 1, before it answered "
+                               << "your simulator exited with status 3 at probe 1, after step k = 0, before it answered "
                                   "\"state 0\" (motion-01)\nrbw: diagnose: its last lines on standard error:\n  dying";
         // the shell waits for a child of its own: both must be ended
         QTest::newRow("hangs") << loop.arg("step) sleep 30 & echo $! >> \"$PIDS\"; wait;;")
-                               << "your simulator did not answer \"state 0\" at probe 1, step 1 within 1 s (motion-01); "
+                               << "your simulator did not answer \"state 0\" at probe 1, after step k = 0 within 1 s (motion-01); "
                                   "it was stopped";
         QTest::newRow("garbage") << loop.arg("state) echo hello world;;")
-                                 << "your simulator answered \"hello world\" to \"state 0\" at probe 1, step 1 "
+                                 << "your simulator answered \"hello world\" to \"state 0\" at probe 1, after step k = 0 "
                                     "(motion-01); expected 9 or 13 numbers";
         QTest::newRow("extra output") << loop.arg("state) echo 0 0 0 0 0 0 0 0 0;; step) ;; reset) echo hi;;")
-                                      << "your simulator answered \"hi\" to \"state 0\" at probe 1, step 1";
+                                      << "your simulator answered \"hi\" to \"state 0\" at probe 1, after step k = 0";
         QTest::newRow("output after quit") << loop.arg("state) echo 0 0 0 0 0 0 0 0 0;; quit) echo bye; exit 0;;")
                                            << "your simulator printed \"bye\" at probe 1 (motion-01) where no answer "
                                               "was asked for";

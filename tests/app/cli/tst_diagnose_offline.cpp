@@ -76,12 +76,12 @@ private slots:
                                         << "motion-02.states: cannot read: ";
         QTest::newRow("states short") << "motion-01.states" << "keep:2" << dir
                                       << "motion-01.states: 2 answers, the probe asks 4 (none for probe 1 (motion-01), "
-                                         "step 3, its answer to \"state 0\": did your program stop early?)";
+                                         "after step k = 2, its answer to \"state 0\": did your program stop early?)";
         QTest::newRow("states garbage") << "motion-01.states" << "replace:2:hello world" << dir
                                         << "motion-01.states:2: \"hello world\": expected 9 or 13 numbers (probe 1 "
-                                           "(motion-01), step 2, its answer to \"state 0\")";
+                                           "(motion-01), after step k = 1, its answer to \"state 0\")";
         QTest::newRow("states nan") << "motion-03.states" << "replace:3:1 2 3 4 5 6 nan 8 9" << dir
-                                    << "motion-03.states:3: your simulator printed nan (probe 3 (motion-03), step 2, "
+                                    << "motion-03.states:3: your simulator printed nan (probe 3 (motion-03), after step k = 1, "
                                        "its answer to \"state 0\")";
         QTest::newRow("states extra") << "motion-01.states" << "append:0 0 0 0 0 0 0 0 0" << dir
                                       << "motion-01.states:5: an answer where none was asked for (the probe asks 4)";
@@ -97,12 +97,12 @@ private slots:
         QTest::newRow("csv probe") << "answers.csv" << "replace:2:motion-99,1,0,0,0,0,0,0,0,0,0,0,,,," << csv
                                    << "answers.csv:2: no probe \"motion-99\"";
         QTest::newRow("csv order") << "answers.csv" << "replace:2:motion-01,2,0,0,0,0,0,0,0,0,0,0,,,," << csv
-                                   << "answers.csv:2: step \"2\", body \"0\"; the next answer of motion-01 is step 1, "
-                                      "body 0";
+                                   << "answers.csv:2: step \"2\", body \"0\"; the next answer of motion-01 has step 1 "
+                                      "(the state after step k = 0), body 0";
         QTest::newRow("csv half r") << "answers.csv" << "replace:2:motion-01,1,0,0,0,0,0,0,0,0,0,0,1,,," << csv
                                     << "answers.csv:2: qw, qx, qy, qz must all be given or all be empty";
         QTest::newRow("csv inf") << "answers.csv" << "replace:2:motion-01,1,0,inf,0,0,0,0,0,0,0,0,,,," << csv
-                                 << "answers.csv:2: your simulator printed inf (probe 1 (motion-01), step 1";
+                                 << "answers.csv:2: your simulator printed inf (probe 1 (motion-01), after step k = 0";
         QTest::newRow("csv short") << "answers.csv" << "keep:3" << csv
                                    << "answers.csv: probe motion-01 has 2 rows (from line 2), it asks 4";
         QTest::newRow("csv group") << "answers.csv" << "keep:5" << QStringList{"--trajectory", "%1/answers.csv",

@@ -1,4 +1,5 @@
 #include "app/gui/panels/simulator/simulator_result_view.h"
+#include "app/core/step_numbering.h"
 
 #include "physics/workbook/checker/mistakes.h"
 #include "physics/workbook/probes/probe_verdict.h"
@@ -110,7 +111,7 @@ SimulatorResultView::SimulatorResultView(QWidget* parent) : QWidget(parent)
     slider_->setPageStep(1);
     sliderLabel_ = new QLabel(this);
     sliderLabel_->setObjectName("stepSliderLabel");
-    sliderLabel_->setMinimumWidth(sliderLabel_->fontMetrics().horizontalAdvance("answer 88 · step 88 · body 8  "));
+    sliderLabel_->setMinimumWidth(sliderLabel_->fontMetrics().horizontalAdvance("answer 88 · after step k = 88 · body 8  "));
     jump_ = new QPushButton(tr("Go to the first divergence"), this);
     jump_->setObjectName("divergenceButton");
     connect(slider_, &QSlider::valueChanged, this, &SimulatorResultView::selectAnswer);
@@ -121,7 +122,7 @@ SimulatorResultView::SimulatorResultView(QWidget* parent) : QWidget(parent)
 
     steps_ = new QTableWidget(0, 6, this);
     steps_->setObjectName("stepsTable");
-    steps_->setHorizontalHeaderLabels({tr("#"), tr("Step"), tr("Body"), tr("Quantity"), tr("Workbook"), tr("Yours")});
+    steps_->setHorizontalHeaderLabels({tr("#"), tr("State"), tr("Body"), tr("Quantity"), tr("Workbook"), tr("Yours")});
     steps_->setSelectionBehavior(QAbstractItemView::SelectRows);
     steps_->verticalHeader()->setVisible(false);
     steps_->horizontalHeader()->setStretchLastSection(true);
@@ -189,10 +190,12 @@ void SimulatorResultView::showFailure(const QString& message, const QStringList&
 
 QString SimulatorResultView::divergenceWords(int probe, const probes::Divergence& d) const
 {
-    return tr("probe %1 (%2), step %3, body %4, %5: expected %6, yours %7")
+    // d.step: the steps before the answer, n; worded as every screen words a state
+    // (step_numbering.h): "after step k = n - 1", "before step k = 0"
+    return tr("probe %1 (%2), %3, body %4, %5: expected %6, yours %7")
         .arg(probe + 1)
         .arg(QString::fromStdString(run_.probes[probe].name))
-        .arg(d.step)
+        .arg(steps::stateName(d.step))
         .arg(d.body)
         .arg(quantityWords(d.quantity), numbers(d.expected, 0, d.expected.size()), numbers(d.given, 0, d.given.size()));
 }
@@ -320,7 +323,7 @@ void SimulatorResultView::fillStepTable()
             const int row = steps_->rowCount();
             steps_->insertRow(row);
             steps_->setItem(row, 0, item(QString::number(a)));
-            steps_->setItem(row, 1, item(QString::number(where[a].step)));
+            steps_->setItem(row, 1, item(steps::stateName(where[a].step)));
             steps_->setItem(row, 2, item(QString::number(where[a].body)));
             steps_->setItem(row, 3, item(quantityWords(part.id)));
             steps_->setItem(row, 4, item(numbers(right[a], part.from, part.count)));
@@ -347,7 +350,7 @@ void SimulatorResultView::selectAnswer(int answer)
         return;
     }
     const std::vector<probes::AnswerSlot> where = probes::answerSlots(run_.probes[probe_]);
-    sliderLabel_->setText(tr("answer %1 · step %2 · body %3").arg(answer).arg(where[answer].step).arg(where[answer].body));
+    sliderLabel_->setText(tr("answer %1 · %2 · body %3").arg(answer).arg(steps::stateName(where[answer].step)).arg(where[answer].body));
     const int parts = static_cast<int>(std::size(kParts));
     int row = answer * parts;
     const std::optional<probes::Divergence>& div = run_.diagnosis.probes[probe_].divergence;

@@ -144,14 +144,20 @@ void TestSimulatorDialog::mistakeOnScreen()
     // the first divergence in words, as rbw names it
     const QJsonObject f = doc.value("first_divergence").toObject();
     const int probe = f.value("probe").toInt() - 1;
-    const QString words = QStringLiteral("probe %1 (%2), step %3, body %4, %5: expected %6, yours %7")
+    // rbw's "step" is the steps taken before the answer, n; the dialog words the state as
+    // every screen of the app does (app/core/step_numbering.h): after step k = n - 1
+    const int n = f.value("step").toInt();
+    const QString state = n > 0 ? QStringLiteral("after step k = %1").arg(n - 1) : QStringLiteral("before step k = 0");
+    const QString words = QStringLiteral("probe %1 (%2), %3, body %4, %5: expected %6, yours %7")
                               .arg(probe + 1)
                               .arg(f.value("probe_name").toString())
-                              .arg(f.value("step").toInt())
+                              .arg(state)
                               .arg(f.value("body").toInt())
                               .arg(SimulatorResultView::quantityWords(f.value("quantity").toString().toStdString()),
                                    numbers(f.value("expected").toArray()), numbers(f.value("given").toArray()));
     QVERIFY2(details.contains("First divergence from the right algorithm: " + words), qPrintable(details));
+    // never the old count of steps taken as a step number ("step 1" for the state after step k = 0)
+    QVERIFY2(!details.contains(QStringLiteral("), step %1,").arg(n)), qPrintable(details));
 
     // the probe of the divergence is selected, its step table highlights one row, the
     // one the slider selected, with rbw's expected and given side by side
@@ -161,12 +167,16 @@ void TestSimulatorDialog::mistakeOnScreen()
     const QList<int> rows = highlightedRows(steps);
     QCOMPARE(rows.size(), 1);
     QCOMPARE(steps->currentRow(), rows.first());
-    QCOMPARE(steps->item(rows.first(), 1)->text(), QString::number(f.value("step").toInt()));
+    QCOMPARE(steps->horizontalHeaderItem(1)->text(), QStringLiteral("State"));
+    QCOMPARE(steps->item(rows.first(), 1)->text(), state);
     QCOMPARE(steps->item(rows.first(), 2)->text(), QString::number(f.value("body").toInt()));
     QCOMPARE(steps->item(rows.first(), 4)->text(), numbers(f.value("expected").toArray()));
     QCOMPARE(steps->item(rows.first(), 5)->text(), numbers(f.value("given").toArray()));
     auto* slider = dialog.findChild<QSlider*>("stepSlider");
     QCOMPARE(steps->item(rows.first(), 0)->text(), QString::number(slider->value()));
+    const QString sliderText = dialog.findChild<QLabel*>("stepSliderLabel")->text();
+    QVERIFY2(sliderText == QStringLiteral("answer %1 · %2 · body %3").arg(slider->value()).arg(state).arg(f.value("body").toInt()),
+             qPrintable(sliderText));
 
     // the slider moves the selection; "Go to the first divergence" comes back
     slider->setValue(0);
