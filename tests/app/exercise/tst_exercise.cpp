@@ -334,8 +334,8 @@ private slots:
         QVERIFY(k.open(QIODevice::ReadOnly));
         const QString sheetText = QString::fromUtf8(s.readAll()), keyText = QString::fromUtf8(k.readAll());
         const qsizetype answers = readJson(key).value("answers").toArray().size();
-        // lesson 1: F, q, x, v, L, I^-1, omega and two probes' v_p
-        QCOMPARE(answers, qsizetype(9));
+        // lesson 1: F, q, x, v, r, L, I^-1, omega and two probes' v_p
+        QCOMPARE(answers, qsizetype(10));
         QCOMPARE(sheetText.count(QStringLiteral("<td class=\"answer\"></td>")), answers);
         // The key's numbers in their own column, not under "your answer" (issue 20).
         QCOMPARE(keyText.count(QStringLiteral("<td class=\"answer\">")), qsizetype(0));

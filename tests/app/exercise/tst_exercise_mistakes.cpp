@@ -12,8 +12,11 @@
 
 #include "app/exercise/exercise.h"
 #include "app/exercise/exercise_mistakes.h"
+#include "app/scene/scene_loader.h"
 #include "physics/engine/world.h"
 #include "physics/workbook/checker/checker.h"
+#include "physics/workbook/checker/follow_through.h"
+#include "physics/workbook/checker/model_inputs.h"
 #include "physics/workbook/checker/mistakes.h"
 
 #include <QFile>
@@ -23,6 +26,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <map>
 #include <numeric>
 
 namespace {
@@ -83,6 +87,16 @@ QString catalogueId(const QString& model)
     return at < 0 ? model : model.left(at);
 }
 
+// Why a one-step model shows in no exercise, each reason checked by a test of this file
+// over every draw (named in the text). A model that shows nowhere without a reason here
+// fails catalogueTableAgrees: the doc never says "no exercise" without saying why.
+const std::map<QString, QString> kWhyNoExercise{
+    {"impulse-body-inverse-inertia",
+     "no exercise: in every draw each contact's body is a cube (I₀⁻¹ the same in every frame), a particle "
+     "(no angular response) or turned about the axis of x_a × n (exercise 07's boxes), so I₀⁻¹ and "
+     "R I₀⁻¹ Rᵀ give the same term (measured: `tst_exercise_mistakes`, `whyBodyInverseInertiaCannotShow`)"},
+};
+
 // The measured "shows in" cell of one model: the exercises in which it (any of its
 // variants) changes some answer in every draw; a several-step model is named by no
 // one-step check (MistakeInfo::oneStep), whatever numbers it gives.
@@ -98,7 +112,10 @@ QString showsInCell(const rbw::MistakeInfo& info, const std::vector<rbw::Exercis
             }
         }
     }
-    if (lessons.isEmpty()) return QStringLiteral("no exercise");
+    if (lessons.isEmpty()) {
+        const auto why = kWhyNoExercise.find(QLatin1String(info.id));
+        return why != kWhyNoExercise.end() ? why->second : QStringLiteral("no exercise");
+    }
     return (lessons.size() == 1 ? "exercise " : "exercises ") + lessons.join(", ");
 }
 
@@ -186,6 +203,26 @@ private slots:
         QVERIFY(modelOf(origin, "lever-arm-from-origin").shownIn.isEmpty());
         QVERIFY(modelOf(origin, "point-velocity-lever-arm-from-origin").shownIn.isEmpty());
         QVERIFY(!modelOf(origin, "torque-reversed").shownIn.isEmpty());   // the measurement still sees the others
+    }
+
+    // Negative control: lesson 1's box back at rest (without the rule that draws its
+    // starting omega, Table 2.1's omega = 0): r' = r + h/2 (0, omega) r = r, so none of the
+    // quaternion mistakes, omega-accumulated (omega' = 0 + I^-1 L') or
+    // inertia-from-old-orientation (R' = R) can show; spinning, each does.
+    void boxAtRestHidesQuaternionMistakes()
+    {
+        rbw::ExerciseSpec spec = lessonSpec("01-one-step");
+        const QStringList models{"quaternion-missing-half", "quaternion-not-normalised", "quaternion-right-multiplied",
+                                 "omega-accumulated", "inertia-from-old-orientation"};
+        const rbw::ExerciseMistakeReport spinning = rbw::measureExerciseMistakes(spec, seeds(20));
+        for (const QString& m : models) QVERIFY2(!modelOf(spinning, m).shownIn.isEmpty(), qPrintable(m));
+        QVERIFY(modelOf(spinning, "quaternion-missing-half").shownIn.contains("orientation (box)"));
+        ruleFor(spec, "bodies[0].angular_velocity");   // the rule exists
+        std::erase_if(spec.vary, [](const rbw::ExerciseVary& v) { return v.paths.contains("bodies[0].angular_velocity"); });
+        const rbw::ExerciseMistakeReport resting = rbw::measureExerciseMistakes(spec, seeds(20));
+        QVERIFY(resting.errors.isEmpty());
+        for (const QString& m : models) QVERIFY2(modelOf(resting, m).shownIn.isEmpty(), qPrintable(m));
+        QVERIFY(!modelOf(resting, "torque-reversed").shownIn.isEmpty());   // the measurement still sees the others
     }
 
     // "avoid" (docs/exercises.md): a number's values that are redrawn. Lesson 1's h from
@@ -289,6 +326,11 @@ private slots:
         }
         // Not vacuous: every model of the catalogue has its row.
         QCOMPARE(rows.size(), qsizetype(rbw::mistakeCatalogue().size()));
+        // A one-step model that no exercise shows says why (kWhyNoExercise, each reason a test).
+        for (const rbw::MistakeInfo& m : rbw::mistakeCatalogue()) {
+            QVERIFY2(showsInCell(m, reports_) != QLatin1String("no exercise"),
+                     qPrintable(QString("%1 shows in no exercise: make one show it, or add why to kWhyNoExercise").arg(m.id)));
+        }
         if (!differ.isEmpty() && qEnvironmentVariableIsSet("RBW_UPDATE_CHECKER_DOC")) {
             QSaveFile out(f.fileName());
             QVERIFY(out.open(QIODevice::WriteOnly));
@@ -311,7 +353,69 @@ private slots:
         QVERIFY(!modelOf(reports_.front(), "gravity-always-on").shownIn.isEmpty());
         QCOMPARE(showsInCell(*rbw::findMistake("gravity-always-on"), reports_),
                  QString("**never in a one-step check** (simulator only)"));
-        QCOMPARE(showsInCell(*rbw::findMistake("omega-accumulated"), reports_), QString("no exercise"));
+        QCOMPARE(showsInCell(*rbw::findMistake("omega-accumulated"), reports_), QString("exercise 01"));
+        QVERIFY(showsInCell(*rbw::findMistake("impulse-body-inverse-inertia"), reports_).startsWith("no exercise: "));
+    }
+
+    // kWhyNoExercise's reason for impulse-body-inverse-inertia, over every draw of every
+    // exercise: each side of each contact of the key is a cube (I0^-1 = k E), has no
+    // angular response (I^-1 = 0 in the contact), or is turned about the axis of
+    // u = x_a x n (R^T u = u), so u.(I0^-1 u) = u.(R I0^-1 R^T u): the model's term is the
+    // right one. Negative control: lesson 1's box (not a cube) turned 90 degrees about z
+    // with u = (1, 0, 0) is none of these, and there the two terms differ.
+    void whyBodyInverseInertiaCannotShow()
+    {
+        int sides = 0;
+        for (const QString& lesson : kLessons) {
+            const rbw::ExerciseSpec spec = lessonSpec(lesson);
+            for (std::uint64_t seed : seeds(20)) {
+                const rbw::GeneratedExercise g = rbw::generateExercise(spec, seed);
+                QVERIFY(g.ok());
+                rbw::World before(*g.scene);
+                while (before.stepIndex() < g.answerStep) QVERIFY(before.step().ok);
+                QSet<int> contacts;
+                for (const rbw::TraceEntry& e : g.key) {
+                    if (e.info->indexKind == rbw::IndexKind::Contact) contacts.insert(e.index);
+                }
+                for (int k : contacts) {
+                    const rbw::ContactInputs in = rbw::checking::contactStepInputs(before, g.answerTrace, k);
+                    const rbw::ContactHeader& c = g.answerTrace.contacts[k];
+                    for (const auto& [body, x] : {std::pair{c.bodyA, in.x_A}, std::pair{c.bodyB, in.x_B}}) {
+                        if (body < 0) continue;
+                        ++sides;
+                        const rbw::Mat3 I0inv = before.massProperties()[body].I0inv_B;
+                        const rbw::Vec3 u = (in.g.p_W - x).cross(in.g.n_W);
+                        const rbw::TraceEntry* r = rbw::checking::traceEntryOf(
+                            g.answerTrace, rbw::checking::AnswerKey{"orientation", body, -1, -1});
+                        const rbw::Quat q = r ? std::get<rbw::Quat>(r->value) : before.states()[body].q_WB;
+                        const bool cube = (I0inv - I0inv(0, 0) * rbw::Mat3::Identity()).norm() <= 1e-12 * I0inv.norm();
+                        const bool noResponse = !g.scene->bodies[body].angularResponse;
+                        const bool aboutU = q.vec().cross(u).norm() <= 1e-9 * (1.0 + q.vec().norm() * u.norm());
+                        const QString where = QString("%1 seed %2 contact %3 body %4").arg(lesson).arg(seed).arg(k).arg(body);
+                        QVERIFY2(cube || noResponse || aboutU, qPrintable(where));
+                        // the consequence: the body-frame and world terms agree
+                        const rbw::Mat3 R = q.toRotationMatrix();
+                        const rbw::Mat3 Iinv_W = R * I0inv * R.transpose();
+                        if (!noResponse) {
+                            RBW_COMPARE_NEAR_STRICT(u.dot(I0inv * u), u.dot(Iinv_W * u), 1e-12 * (1.0 + u.squaredNorm() * I0inv.norm()),
+                                                    where);
+                        }
+                    }
+                }
+            }
+        }
+        QVERIFY(sides > 100);   // not vacuous
+        // Negative control: lesson 1's box (1 x 0.6 x 0.5, M = 2), 90 degrees about z, u = (1, 0, 0):
+        // I0^-1 = diag(9.836066, 4.8, 4.411765), u.I0^-1 u = 9.836066, but R I0^-1 R^T
+        // swaps x and y: u.(R I0^-1 R^T) u = 4.8.
+        const rbw::SceneLoadResult one = rbw::loadSceneFile(QStringLiteral(RBW_SOURCE_DIR "/lessons/01-one-step/scene.json"));
+        QVERIFY(one.ok());
+        const rbw::World w(*one.scene);
+        const rbw::Mat3 I0inv = w.massProperties()[0].I0inv_B;
+        const rbw::Mat3 R = w.states()[0].q_WB.toRotationMatrix();
+        const rbw::Vec3 u(1, 0, 0);
+        RBW_COMPARE_NEAR_STRICT(u.dot(I0inv * u), 9.836066, 1e-6);
+        RBW_COMPARE_NEAR_STRICT(u.dot(R * I0inv * R.transpose() * u), 4.8, 1e-9);
     }
 
     // The separating exercise's key (lesson 6's further exercise, seed 1): step 33, the
