@@ -9,6 +9,7 @@
 // this test builds that table from the real runs and requires the document to hold
 // exactly it. To write it anew after a deliberate change of messages:
 //   RBW_WRITE_RELIABILITY_TABLE=1 build/tests/tst_bad_inputs
+#include "tests/support/pile_scene.h"
 #include "tests/test_support.h"
 
 #include <QDir>
@@ -80,24 +81,7 @@ struct Outcome {
 // A manifold-model scene of n unit boxes, all at (0, 0.5, 0) on the ground.
 QByteArray coincidentBoxes(int n)
 {
-    QJsonArray bodies;
-    for (int i = 0; i < n; ++i) {
-        bodies.append(QJsonObject{{"name", QStringLiteral("box %1").arg(i)},
-                                  {"size", QJsonArray{1, 1, 1}},
-                                  {"mass", 1},
-                                  {"position", QJsonArray{0, 0.5, 0}}});
-    }
-    const QJsonObject scene{{"name", "pile"},
-                            {"dt", 0.01},
-                            {"steps", 2},
-                            {"integrator", "symplectic-euler"},
-                            {"gravity", QJsonArray{0, -9.81, 0}},
-                            {"contact_model", "manifold"},
-                            {"planes", QJsonArray{QJsonObject{{"name", "ground"},
-                                                              {"point", QJsonArray{0, 0, 0}},
-                                                              {"normal", QJsonArray{0, 1, 0}}}}},
-                            {"bodies", bodies}};
-    return QJsonDocument(scene).toJson();
+    return QJsonDocument(rbw::test::pileScene({.boxes = n})).toJson();
 }
 
 Outcome runCase(const QJsonObject& c, const QByteArray& base, QTemporaryDir& dir, int n)

@@ -19,6 +19,7 @@
 #include "app/gui/shell/main_window.h"
 #include "app/gui/shell/run_busy_bar.h"
 #include "tests/app/gui/shell/window_test_support.h"
+#include "tests/support/pile_scene.h"
 
 #include <QAction>
 #include <QElapsedTimer>
@@ -41,26 +42,11 @@ using namespace rbw;
 
 namespace {
 
-// n unit boxes in one place, on a ground plane, in the manifold model.
+// n unit boxes in one place (0.1 m into the air), on a ground plane, in the manifold model.
 QString writePile(const QString& path, int n)
 {
-    QJsonArray bodies;
-    for (int i = 0; i < n; ++i) {
-        bodies.append(QJsonObject{{"name", QStringLiteral("b%1").arg(i)},
-                                  {"size", QJsonArray{1, 1, 1}},
-                                  {"mass", 1},
-                                  {"position", QJsonArray{0, 0.6, 0}}});
-    }
-    const QJsonObject scene{{"name", "Pile"},
-                            {"dt", 1.0 / 60.0},
-                            {"steps", 60},
-                            {"integrator", "symplectic-euler"},
-                            {"gravity", QJsonArray{0, -9.81, 0}},
-                            {"contact_model", "manifold"},
-                            {"planes", QJsonArray{QJsonObject{{"name", "ground"},
-                                                              {"point", QJsonArray{0, 0, 0}},
-                                                              {"normal", QJsonArray{0, 1, 0}}}}},
-                            {"bodies", bodies}};
+    const QJsonObject scene =
+        rbw::test::pileScene({.boxes = n, .y = 0.6, .dt = 1.0 / 60.0, .steps = 60, .boxPrefix = QStringLiteral("b")});
     QFile out(path);
     if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate)) return {};
     out.write(QJsonDocument(scene).toJson(QJsonDocument::Compact));
