@@ -15,7 +15,8 @@
 //   is left after the numbers (a pmatrix, a quaternion tuple, 2.86 \cdot 10^{-17}) and
 //   the typesetting commands are taken out must contain no letter. A function applied
 //   to numbers (I^{-1}(...), ‖·‖) counts as a symbol: its value is a traced number too,
-//   except in the row that defines that value (R = R(r), I^{-1}_2 = I^{-1}(r_2)), and
+//   except in the row that defines that value (R = R(r), I^{-1}_2 = I^{-1}(r_2),
+//   r = r(R), det R = det(...)), and
 //   norm bars around numbers are an operation, not a symbol;
 // - a placeholder whose number is not in the trace (a red "not computed" note) fails
 //   its line too.
@@ -26,6 +27,7 @@
 #include "app/core/focus_filter.h"
 #include "app/derivation/derivation_builder.h"
 #include "tests/app/derivation/derivation_test_support.h"
+#include "physics/engine/integrator_registry.h"
 
 #include <QDir>
 #include <QRegularExpression>
@@ -101,10 +103,11 @@ QString unnumbered(const DerivationRow& row)
     // writes the function's own name before the argument's numbers: that name is the
     // row's result, not a number left out.
     QString substituted = row.substituted;
-    for (const QString& head : {QStringLiteral("R"), QStringLiteral("I^{-1}")}) {
-        const bool definesIt = withoutText(row.formula).startsWith(head + QStringLiteral(" ")) ||
-                               withoutText(row.formula).startsWith(head + QStringLiteral("_"));
-        for (const QString& open : {QStringLiteral("\\big("), QStringLiteral("\\Big(")}) {
+    for (const QString& head : {QStringLiteral("R"), QStringLiteral("I^{-1}"), QStringLiteral("r"), QStringLiteral("\\det")}) {
+        const QString f = withoutText(row.formula);
+        const bool definesIt = f.startsWith(head + QStringLiteral(" ")) || f.startsWith(head + QStringLiteral("_")) ||
+                               f.startsWith(head + QStringLiteral("\\"));
+        for (const QString& open : {QStringLiteral("\\big("), QStringLiteral("\\Big("), QStringLiteral(" \\begin{pmatrix}")}) {
             if (definesIt && substituted.startsWith(head + open)) substituted = substituted.mid(head.size());
         }
     }
@@ -225,15 +228,28 @@ void TestDerivationNumbers::checkSeesATemplateLineWithoutNumbers()
 void TestDerivationNumbers::everyLineHasNumbers_data()
 {
     QTest::addColumn<QString>("lesson");
-    for (const QString& lesson : lessonScenes()) QTest::newRow(qPrintable(lesson)) << lesson;
+    QTest::addColumn<QString>("integrator");   // empty: as written
+    for (const QString& lesson : lessonScenes()) QTest::newRow(qPrintable(lesson)) << lesson << QString();
+    // A student may switch the integrator: every integrator's section, on a lesson with
+    // a force and a probe (1), a free spinning body (9) and contacts (3).
+    for (const char* lesson : {"01-one-step/scene.json", "03-two-box-collision/scene.json", "09-tennis-racket/scene.json"}) {
+        for (const IntegratorInfo& info : integratorCatalogue()) {
+            QTest::addRow("%s with %s", lesson, info.name) << QString::fromLatin1(lesson) << QString::fromLatin1(info.name);
+        }
+    }
 }
 
 void TestDerivationNumbers::everyLineHasNumbers()
 {
     QFETCH(QString, lesson);
+    QFETCH(QString, integrator);
     const SceneLoadResult loaded = loadSceneFile(QStringLiteral(RBW_SOURCE_DIR "/lessons/") + lesson);
     QVERIFY2(loaded.ok(), qPrintable(loaded.errors.join('\n')));
-    const SceneDef& scene = *loaded.scene;
+    SceneDef scene = *loaded.scene;
+    if (!integrator.isEmpty()) {
+        scene.integrator = integrator.toStdString();
+        for (BodyDef& b : scene.bodies) b.integrator.clear();
+    }
     DerivationOptions options;
     options.focusBody = derivationFocusBody(scene, -1);
     std::map<QString, QString> failures;   // template line "file:line" -> its first failure
