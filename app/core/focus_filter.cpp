@@ -20,6 +20,15 @@ int derivationFocusBody(const SceneDef& scene, int wanted)
     return first;
 }
 
+std::vector<int> focusContacts(const StepTrace& trace, int body)
+{
+    std::vector<int> out;
+    for (size_t c = 0; c < trace.contacts.size(); ++c) {
+        if (trace.contacts[c].bodyA == body || trace.contacts[c].bodyB == body) out.push_back(static_cast<int>(c));
+    }
+    return out;
+}
+
 StepTrace focusTrace(const StepTrace& trace, int body)
 {
     StepTrace out;
@@ -30,12 +39,9 @@ StepTrace focusTrace(const StepTrace& trace, int body)
     out.start = trace.start;
     // Contact c of the trace becomes contact renumber[c] of the selection, or -1.
     std::vector<int> renumber(trace.contacts.size(), -1);
-    for (size_t c = 0; c < trace.contacts.size(); ++c) {
-        const ContactHeader& h = trace.contacts[c];
-        if (h.bodyA == body || h.bodyB == body) {
-            renumber[c] = static_cast<int>(out.contacts.size());
-            out.contacts.push_back(h);
-        }
+    for (int c : focusContacts(trace, body)) {
+        renumber[static_cast<std::size_t>(c)] = static_cast<int>(out.contacts.size());
+        out.contacts.push_back(trace.contacts[static_cast<std::size_t>(c)]);
     }
     for (const TraceEntry& e : trace.entries) {
         if (e.info->stage == Stage::Collision && e.index >= 0) {

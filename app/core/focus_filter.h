@@ -22,4 +22,8 @@ int derivationFocusBody(const SceneDef& scene, int wanted);
 // headers. Step, time and diagnostics are kept.
 StepTrace focusTrace(const StepTrace& trace, int body);
 
+// The contacts focusTrace keeps, by their number in the whole trace: contact c of the
+// selection is contact focusContacts(trace, body)[c] of `trace`.
+std::vector<int> focusContacts(const StepTrace& trace, int body);
+
 } // namespace rbw

@@ -75,7 +75,8 @@ DerivationDocument fallbackDocument(const StepTrace& trace, const SceneDef& scen
 }
 
 DerivationDocument templateDocument(const StepTrace& trace, const SceneDef& scene, const QString& templateText,
-                                    const QString& templateLabel, const DerivationOptions& options)
+                                    const QString& templateLabel, const DerivationOptions& options,
+                                    const StepTrace* whole = nullptr)
 {
     const TemplateParseResult parsed = parseDerivationTemplate(templateText, templateLabel);
     if (!parsed.ok()) {
@@ -90,6 +91,7 @@ DerivationDocument templateDocument(const StepTrace& trace, const SceneDef& scen
         return doc;
     }
     TemplateExpander expander(trace, scene, templateLabel, options.digits);
+    if (whole != nullptr) expander.setWholeTrace(whole, focusContacts(*whole, options.focusBody));
     const QString content = expander.nodes(parsed.parsed->nodes, ExpansionContext{});
     DerivationDocument doc;
     doc.errors = expander.errors;
@@ -119,7 +121,7 @@ DerivationDocument buildDerivation(const StepTrace& trace, const SceneDef& scene
                                    const QString& templateLabel, const DerivationOptions& options)
 {
     if (focused(scene, options)) {
-        return templateDocument(focusTrace(trace, options.focusBody), scene, templateText, templateLabel, options);
+        return templateDocument(focusTrace(trace, options.focusBody), scene, templateText, templateLabel, options, &trace);
     }
     return templateDocument(trace, scene, templateText, templateLabel, options);
 }

@@ -38,6 +38,15 @@ public:
 
     QString nodes(const std::vector<TemplateNode>& list, const ExpansionContext& ctx);
 
+    // A page that follows one body (focus_filter.h) reads the other body of a contact
+    // ({{position@B}}, {{pre:linear_velocity@B}}) from the whole trace: `whole` and, per
+    // contact of the selection, its number there (focusContacts).
+    void setWholeTrace(const StepTrace* whole, std::vector<int> contactInWhole)
+    {
+        whole_ = whole;
+        contactInWhole_ = std::move(contactInWhole);
+    }
+
     QStringList errors;
     QStringList notes;
     std::vector<DerivationRow> rows;
@@ -66,6 +75,8 @@ private:
     QString where(int line) const { return QStringLiteral("%1:%2: ").arg(label_).arg(line); }
 
     const StepTrace& trace_;
+    const StepTrace* whole_ = nullptr;   // a focused page: the trace before the selection
+    std::vector<int> contactInWhole_;
     const SceneDef& scene_;
     QString label_;
     int digits_;

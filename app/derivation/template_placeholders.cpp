@@ -156,7 +156,12 @@ QString TemplateExpander::valueLatex(const Placeholder& p, const ExpansionContex
         if (ctx.look.contact < 0) return missing(shown, QStringLiteral("{{pre:...}} works inside @foreach contact"), line, true);
         const int b = resolveBody(p.body, ctx, line, &problem);
         if (!problem.isEmpty()) return missing(shown, problem, line, true);
-        entry = valueBeforeContact(trace_, id, b, ctx.look.contact);
+        // On a focused page the whole trace: the other body's integration and its
+        // contacts with third bodies are not in the selection.
+        const int k = ctx.look.contact;
+        entry = whole_ != nullptr && k < static_cast<int>(contactInWhole_.size())
+                    ? valueBeforeContact(*whole_, id, b, contactInWhole_[static_cast<std::size_t>(k)])
+                    : valueBeforeContact(trace_, id, b, k);
         if (entry == nullptr) return missing(shown, QStringLiteral("not computed in this step"), line, true);
     } else {
         const int explicitBody = p.body.isEmpty() ? -1 : resolveBody(p.body, ctx, line, &problem);
@@ -180,8 +185,14 @@ QString TemplateExpander::valueLatex(const Placeholder& p, const ExpansionContex
             if (p.prefix == QLatin1String("formula")) return QString::fromUtf8(info->formula);
             return unitLatex(QString::fromUtf8(info->unit));
         }
-        if (r.entry == nullptr) return missing(shown, r.problem, line, true);
         entry = r.entry;
+        if (entry == nullptr && whole_ != nullptr && explicitBody >= 0 && indexKindOf(id) == IndexKind::None) {
+            // A body-level value of another body (a contact's partner) on a focused page.
+            LookupContext look;
+            look.body = explicitBody;
+            entry = lookupEntry(*whole_, id, look, -1, explicitBody).entry;
+        }
+        if (entry == nullptr) return missing(shown, r.problem, line, true);
     }
     if (!isFiniteValue(entry->value)) {
         return missing(shown, QStringLiteral("not finite, the step blew up"), line, true);

@@ -16,6 +16,7 @@
 // term) - see docs/references.md.
 #pragma once
 
+#include "physics/engine/quantity_rows_integrators.h"
 #include "physics/engine/trace.h"
 
 #include <span>
@@ -25,7 +26,10 @@
 namespace rbw {
 
 // clang-format off
-inline constexpr QuantityInfo kQuantityCatalogue[] = {
+// The engine's rows: forces, the base integration rows (explicit Euler), probes, the
+// collision and correction stages and the manifold model. The integrators' own rows
+// follow them in quantity_rows_integrators.h (one table, split to keep files short).
+inline constexpr QuantityInfo kEngineQuantityRows[] = {
     // --- forces stage (algorithm step 1) ---
     {"gravity_force", "gravity_force", "gravity force", Stage::Forces, IndexKind::None, "M\\mathbf{g}", "M·g",
      "\\mathbf{f}_g = M\\,\\mathbf{g}", Frame::World, "N"},
@@ -54,6 +58,8 @@ inline constexpr QuantityInfo kQuantityCatalogue[] = {
     {"orientation", "orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
      "r \\leftarrow \\frac{r + \\frac{h}{2}\\,(0,\\boldsymbol{\\omega})\\,r}{\\lVert r + \\frac{h}{2}\\,(0,\\boldsymbol{\\omega})\\,r \\rVert}",
      Frame::World, ""},
+    {"orientation_norm", "orientation_norm", "orientation norm", Stage::Integration, IndexKind::None, "\\lVert\\cdot\\rVert", "‖r*‖",
+     "\\lVert r + \\tfrac{h}{2}\\,(0,\\boldsymbol{\\omega})\\,r \\rVert\\ \\text{(before normalising)}", Frame::None, ""},
     {"angular_momentum", "angular_momentum", "angular momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
      "\\mathbf{L} \\leftarrow \\mathbf{L} + h\\,\\mathbf{q}", Frame::World, "kg·m²/s"},
     {"inertia_body", "inertia_body", "inertia body", Stage::Integration, IndexKind::None, "I_0", "I₀",
@@ -70,11 +76,16 @@ inline constexpr QuantityInfo kQuantityCatalogue[] = {
     {"angular_velocity", "angular_velocity", "angular velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}", "ω",
      "\\boldsymbol{\\omega} = I^{-1}\\,\\mathbf{L}", Frame::World, "rad/s"},
     // --- probes (algorithm step 8) ---
+    {"p_B", "p_B", "point in the body frame", Stage::Probes, IndexKind::Probe, "\\mathbf{p}_B", "p_B",
+     "\\mathbf{p}_B\\ \\text{(the point fixed in the body, from the scene)}", Frame::Body, "m"},
     {"probe_position", "probe_position", "probe position", Stage::Probes, IndexKind::Probe, "\\mathbf{p}", "p",
      "\\mathbf{p} = \\mathbf{x} + R\\,\\mathbf{p}_B", Frame::World, "m"},
     {"point_velocity", "point_velocity", "point velocity", Stage::Probes, IndexKind::Probe, "\\mathbf{v}_p", "v_p",
      "\\mathbf{v}_p = \\mathbf{v} + \\boldsymbol{\\omega} \\times (\\mathbf{p} - \\mathbf{x})",
      Frame::World, "m/s"},
+    {"omega_cross_r_W", "omega_cross_r_W", "rotational point velocity", Stage::Probes, IndexKind::Probe,
+     "\\boldsymbol{\\omega}\\times(\\mathbf{p} - \\mathbf{x})", "ω×(p−x)",
+     "\\boldsymbol{\\omega}\\times(\\mathbf{p} - \\mathbf{x})\\ \\text{(the rotation's share of}\\ \\mathbf{v}_p)", Frame::World, "m/s"},
     // --- collision stage (docs/references.md §2–§3) ---
     // World-level broad-phase counts (body -1).
     {"pairs_tested", "pairs_tested", "pairs tested", Stage::Collision, IndexKind::None, "N_{\\text{tested}}", "N",
@@ -128,6 +139,12 @@ inline constexpr QuantityInfo kQuantityCatalogue[] = {
     {"friction_impulse", "friction_impulse", "friction impulse", Stage::Collision, IndexKind::Contact, "J_t\\,\\mathbf{t}", "J_t t",
      "J_t = \\min\\!\\Big(\\frac{|\\mathbf{v}_{\\text{rel},t}|}{\\tfrac{1}{M_A} + \\tfrac{1}{M_B} + [\\cdot]_{A,t} + [\\cdot]_{B,t}},\\ \\mu J\\Big)",
      Frame::World, "N·s"},
+    {"tangent_speed", "tangent_speed", "tangent speed", Stage::Collision, IndexKind::Contact, "|\\mathbf{v}_{\\text{rel},t}|", "|v_rel,t|",
+     "|\\mathbf{v}_{\\text{rel},t}| = |\\mathbf{v}_{\\text{rel}} - (\\mathbf{v}_{\\text{rel}}\\cdot\\mathbf{n})\\,\\mathbf{n}|\\ \\text{(after the normal impulse)}", Frame::None, "m/s"},
+    {"friction_direction", "friction_direction", "friction direction", Stage::Collision, IndexKind::Contact, "\\mathbf{t}", "t",
+     "\\mathbf{t} = -\\mathbf{v}_{\\text{rel},t}/|\\mathbf{v}_{\\text{rel},t}|\\ \\text{(against the sliding)}", Frame::World, ""},
+    {"tangent_denominator", "tangent_denominator", "tangent denominator", Stage::Collision, IndexKind::Contact, "k_t", "k_t",
+     "k_t = \\tfrac{1}{M_A} + \\tfrac{1}{M_B} + [\\cdot]_{A,t} + [\\cdot]_{B,t}", Frame::None, "1/kg"},
     {"friction_coefficient", "friction_coefficient", "friction coefficient", Stage::Collision, IndexKind::Contact, "\\mu", "μ",
      "\\mu\\ \\text{(Coulomb friction coefficient)}", Frame::None, ""},
     {"sliding", "sliding", "sliding", Stage::Collision, IndexKind::Contact, "s", "sliding",
@@ -166,6 +183,14 @@ inline constexpr QuantityInfo kQuantityCatalogue[] = {
      "T' = \\sum_{A,B} \\tfrac12 M|\\mathbf{v}'|^2 + \\tfrac12\\boldsymbol{\\omega}'\\cdot\\mathbf{L}'",
      Frame::None, "J"},
     // --- correction stage: not part of the impulse formula ---
+    {"correction_depth", "correction_depth", "correction depth", Stage::Correction, IndexKind::Correction, "d", "d",
+     "d\\ \\text{(the overlap this correction removes)}", Frame::None, "m"},
+    {"correction_normal", "correction_normal", "correction normal", Stage::Correction, IndexKind::Correction, "\\mathbf{n}", "n",
+     "\\mathbf{n}\\ \\text{(unit, from B to A)}", Frame::World, ""},
+    {"correction_inv_mass_a", "correction_inv_mass_a", "correction inverse mass A", Stage::Correction, IndexKind::Correction, "1/M_A", "1/M_A",
+     "1/M_A", Frame::None, "1/kg"},
+    {"correction_inv_mass_b", "correction_inv_mass_b", "correction inverse mass B", Stage::Correction, IndexKind::Correction, "1/M_B", "1/M_B",
+     "1/M_B\\ (0\\ \\text{for a plane or a fixed body})", Frame::None, "1/kg"},
     {"correction_a", "correction_a", "correction A", Stage::Correction, IndexKind::Correction, "\\Delta\\mathbf{x}_A", "Δx_A",
      "\\Delta\\mathbf{x}_A = d\\,\\mathbf{n}\\,\\frac{1/M_A}{1/M_A + 1/M_B}",
      Frame::World, "m"},
@@ -201,6 +226,18 @@ inline constexpr QuantityInfo kQuantityCatalogue[] = {
     {"target_normal_velocity_baumgarte", "target_normal_velocity", "target normal velocity", Stage::Collision, IndexKind::Contact, "v_n^{*}", "v_n*",
      "v_n^{*} = \\max\\!\\big(v_{\\text{bounce}},\\ \\tfrac{\\beta}{h}\\max(0,\\ d - \\text{slop})\\big)\\ \\text{(Baumgarte)}",
      Frame::None, "m/s"},
+    {"r_A_W", "r_A_W", "lever arm A", Stage::Collision, IndexKind::Contact, "\\mathbf{r}_A", "r_A",
+     "\\mathbf{r}_A = \\mathbf{p} - \\mathbf{x}_A", Frame::World, "m"},
+    {"r_B_W", "r_B_W", "lever arm B", Stage::Collision, IndexKind::Contact, "\\mathbf{r}_B", "r_B",
+     "\\mathbf{r}_B = \\mathbf{p} - \\mathbf{x}_B", Frame::World, "m"},
+    {"manifold_rotational_a", "rotational_a", "rotational A", Stage::Collision, IndexKind::Contact, "[\\cdot]_A", "(r_A×n)·I_A⁻¹(r_A×n)",
+     "(\\mathbf{r}_A\\times\\mathbf{n})\\cdot I_A^{-1}(\\mathbf{r}_A\\times\\mathbf{n}) = \\big[(I_A^{-1}(\\mathbf{r}_A\\times\\mathbf{n}))\\times\\mathbf{r}_A\\big]\\cdot\\mathbf{n}",
+     Frame::None, "1/kg"},
+    {"manifold_rotational_b", "rotational_b", "rotational B", Stage::Collision, IndexKind::Contact, "[\\cdot]_B", "(r_B×n)·I_B⁻¹(r_B×n)",
+     "(\\mathbf{r}_B\\times\\mathbf{n})\\cdot I_B^{-1}(\\mathbf{r}_B\\times\\mathbf{n})\\ (0\\ \\text{for a plane})",
+     Frame::None, "1/kg"},
+    {"gap_rate", "gap_rate", "gap rate", Stage::Collision, IndexKind::Contact, "d/h", "d/h",
+     "d/h\\ \\text{(the overlap per step; } < 0 \\text{ apart; no bounce: } v_n^{*} = \\min(0,\\ d/h))", Frame::None, "m/s"},
     {"normal_mass", "normal_mass", "normal mass", Stage::Collision, IndexKind::Contact, "m_n", "m_n",
      "m_n = \\Big(\\tfrac{1}{M_A} + \\tfrac{1}{M_B} + \\big[(I_A^{-1}(\\mathbf{r}_A\\times\\mathbf{n}))\\times\\mathbf{r}_A + (I_B^{-1}(\\mathbf{r}_B\\times\\mathbf{n}))\\times\\mathbf{r}_B\\big]\\cdot\\mathbf{n}\\Big)^{-1}",
      Frame::None, "kg"},
@@ -238,6 +275,10 @@ inline constexpr QuantityInfo kQuantityCatalogue[] = {
      "\\Delta\\mathbf{x}_s = \\sum_{\\text{substeps}} h_s\\mathbf{v}_i - h\\,\\mathbf{v}_{n+1}\\ \\text{(what the substeps moved beyond the final velocity)}",
      Frame::World, "m"},
     // Per body (index -1).
+    {"contact_impulse_sum", "contact_impulse_sum", "contact impulse sum", Stage::Collision, IndexKind::None, "\\sum\\mathbf{P}", "ΣP",
+     "\\sum\\mathbf{P}\\ \\text{(the solver's impulses on the body in this step)}", Frame::World, "N·s"},
+    {"contact_moment_sum", "contact_moment_sum", "contact moment sum", Stage::Collision, IndexKind::None, "\\sum\\mathbf{r}\\times\\mathbf{P}", "Σr×P",
+     "\\sum\\mathbf{r}\\times\\mathbf{P}\\ \\text{(their moments about the centre of mass)}", Frame::World, "kg·m²/s"},
     {"contact_force", "contact_force", "contact force", Stage::Collision, IndexKind::None, "\\mathbf{F}_c", "F_c",
      "\\mathbf{F}_c = \\tfrac1h\\sum \\mathbf{P}\\ \\text{(the solver's impulses on the body, added to}\\ \\mathbf{F})",
      Frame::World, "N"},
@@ -267,136 +308,22 @@ inline constexpr QuantityInfo kQuantityCatalogue[] = {
      Frame::World, "m"},
     {"deepest_overlap", "deepest_overlap", "deepest overlap", Stage::Correction, IndexKind::None, "d_{\\max}", "d_max",
      "d_{\\max} = \\max\\big(0,\\ \\max_{\\text{points}} -s\\big)\\ \\text{after the position fix}", Frame::None, "m"},
-    // --- shared by several integrators ---
-    {"gyroscopic_skipped", "gyroscopic_skipped", "gyroscopic skipped", Stage::Integration, IndexKind::None, "I_0 = k\\,E", "I₀ = k·E",
-     "I_0 = k\\,E \\;\\Rightarrow\\; \\boldsymbol{\\omega}\\times I_0\\boldsymbol{\\omega} = 0\\ \\text{(gyroscopic work skipped)}",
-     Frame::Body, ""},
-    // --- symplectic Euler: velocities first, then positions with the new ones ---
-    {"se_linear_velocity", "linear_velocity", "linear velocity", Stage::Integration, IndexKind::None, "\\mathbf{v}", "v",
-     "\\mathbf{v}_{n+1} = \\mathbf{v}_n + h\\,\\mathbf{F}/M", Frame::World, "m/s"},
-    {"se_position", "position", "position", Stage::Integration, IndexKind::None, "\\mathbf{x}", "x",
-     "\\mathbf{x}_{n+1} = \\mathbf{x}_n + h\\,\\mathbf{v}_{n+1}", Frame::World, "m"},
-    {"se_angular_momentum", "angular_momentum", "angular momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
-     "\\mathbf{L}_{n+1} = \\mathbf{L}_n + h\\,\\mathbf{q}", Frame::World, "kg·m²/s"},
-    {"update_angular_velocity", "update_angular_velocity", "update angular velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}'", "ω'",
-     "\\boldsymbol{\\omega}' = I^{-1}(r_n)\\,\\mathbf{L}_{n+1}",
-     Frame::World, "rad/s"},
-    {"se_orientation", "orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
-     "r_{n+1} = \\frac{r_n + \\frac{h}{2}(0,\\boldsymbol{\\omega}')\\,r_n}{\\lVert\\cdot\\rVert}",
-     Frame::World, ""},
-    // --- explicit Runge-Kutta (midpoint, RK4) on y = (x, r, P, L) ---
-    {"stage_velocity", "stage_velocity", "stage velocity", Stage::Integration, IndexKind::RkStage, "\\mathbf{k}_{x,i}", "k_x,i",
-     "\\mathbf{k}_{x,i} = \\dot{\\mathbf{x}}(Y_i) = \\mathbf{v}_i",
-     Frame::World, "m/s"},
-    {"stage_angular_velocity", "stage_angular_velocity", "stage angular velocity", Stage::Integration, IndexKind::RkStage, "\\boldsymbol{\\omega}_i", "ω_i",
-     "\\boldsymbol{\\omega}_i = I^{-1}(r_i)\\,\\mathbf{L}_i",
-     Frame::World, "rad/s"},
-    {"stage_orientation_rate", "stage_orientation_rate", "stage orientation rate", Stage::Integration, IndexKind::RkStage, "k_{r,i}", "k_r,i",
-     "k_{r,i} = \\dot r(Y_i) = \\tfrac12\\,(0,\\boldsymbol{\\omega}_i)\\,r_i",
-     Frame::World, "1/s"},
-    {"stage_torque", "stage_torque", "stage torque", Stage::Integration, IndexKind::RkStage, "\\mathbf{k}_{L,i}", "k_L,i",
-     "\\mathbf{k}_{L,i} = \\dot{\\mathbf{L}}(Y_i) = \\mathbf{q}", Frame::World, "N·m"},
-    {"midpoint_position", "position", "position", Stage::Integration, IndexKind::None, "\\mathbf{x}", "x",
-     "\\mathbf{x}_{n+1} = \\mathbf{x}_n + h\\,\\mathbf{k}_{x,2}", Frame::World, "m"},
-    {"midpoint_linear_velocity", "linear_velocity", "linear velocity", Stage::Integration, IndexKind::None, "\\mathbf{v}", "v",
-     "\\mathbf{v}_{n+1} = \\mathbf{v}_n + h\\,\\mathbf{F}/M", Frame::World, "m/s"},
-    {"midpoint_orientation", "orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
-     "r_{n+1} = \\frac{r_n + h\\,k_{r,2}}{\\lVert\\cdot\\rVert}", Frame::World, ""},
-    {"midpoint_angular_momentum", "angular_momentum", "angular momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
-     "\\mathbf{L}_{n+1} = \\mathbf{L}_n + h\\,\\mathbf{k}_{L,2}",
-     Frame::World, "kg·m²/s"},
-    {"rk4_position", "position", "position", Stage::Integration, IndexKind::None, "\\mathbf{x}", "x",
-     "\\mathbf{x}_{n+1} = \\mathbf{x}_n + \\tfrac{h}{6}(\\mathbf{k}_{x,1} + 2\\mathbf{k}_{x,2} + 2\\mathbf{k}_{x,3} + \\mathbf{k}_{x,4})",
-     Frame::World, "m"},
-    {"rk4_linear_velocity", "linear_velocity", "linear velocity", Stage::Integration, IndexKind::None, "\\mathbf{v}", "v",
-     "\\mathbf{v}_{n+1} = \\mathbf{v}_n + h\\,\\mathbf{F}/M", Frame::World, "m/s"},
-    {"rk4_orientation", "orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
-     "r_{n+1} = \\frac{r_n + \\frac{h}{6}(k_{r,1} + 2k_{r,2} + 2k_{r,3} + k_{r,4})}{\\lVert\\cdot\\rVert}",
-     Frame::World, ""},
-    {"rk4_angular_momentum", "angular_momentum", "angular momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
-     "\\mathbf{L}_{n+1} = \\mathbf{L}_n + \\tfrac{h}{6}(\\mathbf{k}_{L,1} + 2\\mathbf{k}_{L,2} + 2\\mathbf{k}_{L,3} + \\mathbf{k}_{L,4})",
-     Frame::World, "kg·m²/s"},
-    // --- implicit gyroscopic (Catto GDC 2015; Bullet computeGyroscopicImpulseImplicit_Body) ---
-    {"body_angular_velocity", "body_angular_velocity", "body angular velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}_B", "ω_B",
-     "\\boldsymbol{\\omega}_B = R^{\\mathsf{T}}\\boldsymbol{\\omega}",
-     Frame::Body, "rad/s"},
-    {"gyroscopic_jacobian", "gyroscopic_jacobian", "gyroscopic jacobian", Stage::Integration, IndexKind::None, "J", "J",
-     "J = I_0 + h\\,\\big([\\boldsymbol{\\omega}_B]_\\times I_0 - [I_0\\boldsymbol{\\omega}_B]_\\times\\big)",
-     Frame::Body, "kg·m²"},
-    {"body_angular_velocity_new", "body_angular_velocity_new", "body angular velocity new", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}_B'", "ω_B'",
-     "\\boldsymbol{\\omega}_B' = \\boldsymbol{\\omega}_B - J^{-1}\\,h\\,\\boldsymbol{\\omega}_B\\times I_0\\boldsymbol{\\omega}_B",
-     Frame::Body, "rad/s"},
-    {"newton_iterations", "newton_iterations", "newton iterations", Stage::Integration, IndexKind::None, "n_{\\text{Newton}}", "n",
-     "n_{\\text{Newton}}\\ \\text{(Newton updates taken)}", Frame::None, ""},
-    {"gyroscopic_residual", "newton_residual", "newton residual", Stage::Integration, IndexKind::None, "\\lVert\\mathbf{g}\\rVert", "|g|",
-     "\\mathbf{g} = I_0(\\boldsymbol{\\omega}_B' - \\boldsymbol{\\omega}_B) + h\\,\\boldsymbol{\\omega}_B'\\times I_0\\boldsymbol{\\omega}_B'",
-     Frame::None, "kg·m²/s"},
-    {"gyroscopic_angular_velocity", "update_angular_velocity", "update angular velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}'", "ω'",
-     "\\boldsymbol{\\omega}' = R\\,\\boldsymbol{\\omega}_B' + h\\,I^{-1}\\mathbf{q}",
-     Frame::World, "rad/s"},
-    {"gyroscopic_angular_momentum", "angular_momentum", "angular momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
-     "\\mathbf{L}_{n+1} = R_{n+1} I_0 R_{n+1}^{\\mathsf{T}}\\,\\boldsymbol{\\omega}'",
-     Frame::World, "kg·m²/s"},
-    // --- implicit midpoint (Lie-Poisson form in the body frame + Cayley rotation) ---
-    {"body_angular_momentum", "body_angular_momentum", "body angular momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}_B", "L_B",
-     "\\mathbf{L}_B = R^{\\mathsf{T}}\\mathbf{L}", Frame::Body, "kg·m²/s"},
-    {"body_angular_momentum_new", "body_angular_momentum_new", "body angular momentum new", Stage::Integration, IndexKind::None, "\\mathbf{L}_B'", "L_B'",
-     "\\mathbf{L}_B' = \\mathbf{L}_B - h\\,\\boldsymbol{\\omega}_m\\times\\mathbf{L}_m,\\ \\mathbf{L}_m = \\tfrac12(\\mathbf{L}_B + \\mathbf{L}_B'),\\ \\boldsymbol{\\omega}_m = I_0^{-1}\\mathbf{L}_m",
-     Frame::Body, "kg·m²/s"},
-    {"midpoint_body_angular_velocity", "midpoint_angular_velocity", "midpoint angular velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}_m", "ω_m",
-     "\\boldsymbol{\\omega}_m = I_0^{-1}\\,\\tfrac12(\\mathbf{L}_B + \\mathbf{L}_B')",
-     Frame::Body, "rad/s"},
-    {"midpoint_world_angular_velocity", "midpoint_angular_velocity", "midpoint angular velocity", Stage::Integration, IndexKind::None, "\\boldsymbol{\\omega}_m", "ω_m",
-     "\\boldsymbol{\\omega}_m = I^{-1}(r_m)\\,\\mathbf{L},\\ r_m = \\tfrac12(r_n + r_{n+1})",
-     Frame::World, "rad/s"},
-    {"midpoint_newton_residual", "newton_residual", "newton residual", Stage::Integration, IndexKind::None, "\\lVert\\mathbf{G}\\rVert", "|G|",
-     "\\mathbf{G} = \\mathbf{L}_B' - \\mathbf{L}_B + h\\,\\boldsymbol{\\omega}_m\\times\\mathbf{L}_m",
-     Frame::None, "kg·m²/s"},
-    {"fixed_point_iterations", "newton_iterations", "newton iterations", Stage::Integration, IndexKind::None, "n_{\\text{iter}}", "n",
-     "n_{\\text{iter}}\\ \\text{(fixed-point iterations on } \\boldsymbol{\\omega}_m)",
-     Frame::None, ""},
-    {"fixed_point_residual", "newton_residual", "newton residual", Stage::Integration, IndexKind::None, "\\lVert\\Delta\\boldsymbol{\\omega}_m\\rVert", "|Δω_m|",
-     "\\lVert\\boldsymbol{\\omega}_m^{(k+1)} - \\boldsymbol{\\omega}_m^{(k)}\\rVert",
-     Frame::None, "rad/s"},
-    {"cayley_rotation", "cayley_rotation", "cayley rotation", Stage::Integration, IndexKind::None, "c", "c",
-     "c = \\frac{(1,\\ \\tfrac{h}{2}\\boldsymbol{\\omega}_m)}{\\lVert(1,\\ \\tfrac{h}{2}\\boldsymbol{\\omega}_m)\\rVert} \\;=\\; \\operatorname{cay}(h[\\boldsymbol{\\omega}_m]_\\times)",
-     Frame::Body, ""},
-    {"cayley_orientation", "orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
-     "r_{n+1} = r_n\\,c", Frame::World, ""},
-    {"cayley_world_orientation", "orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
-     "r_{n+1} = r_n + \\tfrac{h}{2}(0,\\boldsymbol{\\omega}_m)\\,\\tfrac12(r_n + r_{n+1})",
-     Frame::World, ""},
-    {"half_kick_angular_momentum", "angular_momentum", "angular momentum", Stage::Integration, IndexKind::None, "\\mathbf{L}", "L",
-     "\\mathbf{L}_{n+1} = \\mathbf{L}_n + \\tfrac{h}{2}\\mathbf{q} + \\tfrac{h}{2}\\mathbf{q}",
-     Frame::World, "kg·m²/s"},
-    {"verlet_position", "position", "position", Stage::Integration, IndexKind::None, "\\mathbf{x}", "x",
-     "\\mathbf{x}_{n+1} = \\mathbf{x}_n + h\\,(\\mathbf{v}_n + \\tfrac{h}{2}\\mathbf{F}/M)",
-     Frame::World, "m"},
-    {"verlet_linear_velocity", "linear_velocity", "linear velocity", Stage::Integration, IndexKind::None, "\\mathbf{v}", "v",
-     "\\mathbf{v}_{n+1} = \\mathbf{v}_n + \\tfrac{h}{2}\\mathbf{F}/M + \\tfrac{h}{2}\\mathbf{F}/M",
-     Frame::World, "m/s"},
-    // --- rotation matrix (Napier practical 6) ---
-    {"rotation_matrix_update", "rotation_matrix_update", "rotation matrix update", Stage::Integration, IndexKind::None, "R + h[\\boldsymbol{\\omega}]_\\times R", "R + h[ω]×R",
-     "R_{n+1} = R_n + h\\,[\\boldsymbol{\\omega}_n]_\\times R_n",
-     Frame::World, ""},
-    {"orthonormality_error_before", "orthonormality_error_before", "orthonormality error before", Stage::Integration, IndexKind::None, "\\lVert R^{\\mathsf{T}}R - E\\rVert_F", "‖RᵀR − E‖ (before)",
-     "\\lVert R^{\\mathsf{T}}R - E\\rVert_F\\ \\text{of}\\ R_n + h[\\boldsymbol{\\omega}]_\\times R_n",
-     Frame::None, ""},
-    {"polar_rotation_matrix", "rotation_matrix", "rotation matrix", Stage::Integration, IndexKind::None, "R", "R",
-     "R \\leftarrow U V^{\\mathsf{T}},\\ U\\Sigma V^{\\mathsf{T}} = R_n + h[\\boldsymbol{\\omega}]_\\times R_n\\ \\text{(nearest rotation)}",
-     Frame::World, ""},
-    {"drifting_rotation_matrix", "rotation_matrix", "rotation matrix", Stage::Integration, IndexKind::None, "R", "R",
-     "R \\leftarrow R_n + h[\\boldsymbol{\\omega}]_\\times R_n\\ \\text{(not orthonormalised)}",
-     Frame::World, ""},
-    {"orthonormality_error", "orthonormality_error", "orthonormality error", Stage::Integration, IndexKind::None, "\\lVert R^{\\mathsf{T}}R - E\\rVert_F", "‖RᵀR − E‖",
-     "\\lVert R^{\\mathsf{T}}R - E\\rVert_F",
-     Frame::None, ""},
-    {"rotation_determinant", "rotation_determinant", "rotation determinant", Stage::Integration, IndexKind::None, "\\det R", "det R",
-     "\\det R\\ (1\\ \\text{for a rotation})", Frame::None, ""},
-    {"orientation_from_matrix", "orientation", "orientation", Stage::Integration, IndexKind::None, "r", "r",
-     "r = r(R)\\ \\text{(read from } R\\text{, normalised)}", Frame::World, ""},
 };
 // clang-format on
+
+namespace detail {
+template <std::size_t A, std::size_t B>
+consteval std::array<QuantityInfo, A + B> joinRows(const QuantityInfo (&a)[A], const QuantityInfo (&b)[B])
+{
+    std::array<QuantityInfo, A + B> out{};
+    for (std::size_t i = 0; i < A; ++i) out[i] = a[i];
+    for (std::size_t i = 0; i < B; ++i) out[A + i] = b[i];
+    return out;
+}
+} // namespace detail
+
+// The one table: the engine's rows, then the integrators' rows.
+inline constexpr std::array kQuantityCatalogue = detail::joinRows(kEngineQuantityRows, kIntegratorQuantityRows);
 
 // Every row of the catalogue, in table order.
 constexpr std::span<const QuantityInfo> quantityCatalogue() { return kQuantityCatalogue; }

@@ -13,6 +13,9 @@
 //
 // To record anew after a deliberate change of results:
 //   RBW_RECORD_GOLDEN=1 build/tests/tst_golden_trace   (writes tests/golden/traces.txt)
+// To see what a new hash stands for, RBW_DUMP_GOLDEN=<file> writes what is hashed as
+// text, one line per entry (%.17g), sorted within a step: two dumps, before and after a
+// change that only adds trace rows, differ only by added lines (issue 20).
 #include "tests/test_support.h"
 
 #include "app/core/lesson_catalogue.h"
@@ -22,6 +25,7 @@
 #include <QDir>
 #include <QFile>
 #include <QSaveFile>
+#include <QTextStream>
 #include <QtTest>
 
 #include <algorithm>
@@ -70,8 +74,32 @@ std::uint64_t entryHash(const TraceEntry& e)
     return f.h;
 }
 
+QTextStream* gDump = nullptr;   // RBW_DUMP_GOLDEN's file, when set
+QString gDumpRow;
+
+void dumpStep(const StepTrace& t, const StepStatus& st)
+{
+    const QString head = gDumpRow + QStringLiteral(" k=%1 ").arg(t.step);
+    QStringList lines;
+    for (const TraceEntry& e : t.entries) {
+        QString l = head + QStringLiteral("%1|%2|%3|%4|%5|").arg(QLatin1String(e.info->id), QLatin1String(e.info->formula))
+                               .arg(e.body).arg(e.index).arg(e.value.index());
+        for (double d : test::flatten(e.value)) l += QString::asprintf(" %.17g", d);
+        lines << l;
+    }
+    for (const ContactHeader& c : t.contacts) {
+        lines << head + QStringLiteral("contact %1 %2 %3 %4 %5 %6 %7").arg(c.bodyA).arg(c.bodyB).arg(c.plane)
+                            .arg(QLatin1String(c.feature), QLatin1String(c.resolution)).arg(c.pointCount).arg(c.separating);
+    }
+    lines << head + QString::asprintf("energy %.17g %.17g status %d ", t.diagnostics.total, t.time, int(st.ok)) +
+                 QString::fromStdString(st.kind);
+    lines.sort();
+    for (const QString& l : lines) *gDump << l << '\n';
+}
+
 void hashStep(Fnv& f, const StepTrace& t, const StepStatus& st)
 {
+    if (gDump != nullptr) dumpStep(t, st);
     f.num(static_cast<long long>(t.step));
     f.num(t.time);
     std::vector<std::uint64_t> hs;
@@ -200,6 +228,19 @@ private slots:
                 out.write((r.name + QStringLiteral(" | ") + runHashes(r.scene) + QLatin1Char('\n')).toUtf8());
             }
             QVERIFY(out.commit());
+        }
+        if (qEnvironmentVariableIsSet("RBW_DUMP_GOLDEN")) {
+            QSaveFile f(qEnvironmentVariable("RBW_DUMP_GOLDEN"));
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Text));
+            QTextStream ts(&f);
+            gDump = &ts;
+            for (const Row& r : allRows()) {
+                gDumpRow = r.name;
+                runHashes(r.scene);
+            }
+            gDump = nullptr;
+            ts.flush();
+            QVERIFY(f.commit());
         }
         golden_ = readGolden();
         QVERIFY2(!golden_.empty(), qPrintable(QStringLiteral("no golden file at ") + goldenPath()));

@@ -16,6 +16,11 @@ void CorrectionStage::run(StepContext& ctx)
         const double invMB = ctx.mass[c.b].invM;
         const double sum = invMA + invMB;
         if (sum == 0.0) continue;
+        // What the shares are made of, for the derivation: d, n, 1/M_A, 1/M_B
+        record(ctx.trace, q::correction_depth, c.a, c.depth, index);
+        record(ctx.trace, q::correction_normal, c.a, c.n_W, index);
+        record(ctx.trace, q::correction_inv_mass_a, c.a, invMA, index);
+        record(ctx.trace, q::correction_inv_mass_b, c.a, invMB, index);
         // dx_A = d n (1/M_A) / (1/M_A + 1/M_B)
         const Vec3 dx_A = c.depth * (invMA / sum) * c.n_W;
         if (invMA != 0.0) record(ctx.trace, q::correction_a, c.a, dx_A, index);
@@ -38,7 +43,11 @@ void CorrectionStage::run(StepContext& ctx)
                 depth = std::max(depth, -plane.n_W.dot(corner - plane.point_W));
             }
             if (depth == 0.0) continue;
-            // dx_A = d n
+            // dx_A = d n (the plane takes no share: 1/M_B = 0)
+            record(ctx.trace, q::correction_depth, b, depth, index);
+            record(ctx.trace, q::correction_normal, b, plane.n_W, index);
+            record(ctx.trace, q::correction_inv_mass_a, b, ctx.mass[b].invM, index);
+            record(ctx.trace, q::correction_inv_mass_b, b, 0.0, index);
             const Vec3 dx_A = depth * plane.n_W;
             record(ctx.trace, q::correction_a, b, dx_A, index++);
             ctx.states[b].x_W += dx_A;

@@ -135,10 +135,13 @@ ImpulseResult applyContactImpulse(const ContactGeometry& g, ResponseBody A, Resp
         const Vec3 v_rel2 = (a2.v + a2.omega.cross(r.x_a)) - (b2.v + b2.omega.cross(r.x_b));
         const Vec3 v_t = v_rel2 - v_rel2.dot(n) * n;
         const double speed_t = v_t.norm();
+        record(trace, q::tangent_speed, a, speed_t, k);
         if (speed_t > 1e-12 * std::max(1.0, v_rel2.norm())) {
             r.t_W = -v_t / speed_t;   // friction opposes sliding
+            record(trace, q::friction_direction, a, r.t_W, k);
             const double k_t = a2.invM + b2.invM + rotationalTerm(a2.Iinv, r.x_a, r.t_W) +
                                rotationalTerm(b2.Iinv, r.x_b, r.t_W);
+            record(trace, q::tangent_denominator, a, k_t, k);
             // J_t* = -(v_rel' . t) / k_t = speed_t / k_t stops the sliding exactly
             const double J_t_stop = speed_t / k_t;
             r.J_t = std::min(J_t_stop, mu * r.J);

@@ -27,8 +27,11 @@ void ExplicitEuler::advance(const BodyStep& step, BodyState& s) const
     // would then silently give the zero quaternion: fall back to the scaled norm.
     const double norm2 = s.q_WB.squaredNorm();
     if (std::isfinite(norm2)) {
-        s.q_WB.coeffs() /= std::sqrt(norm2);
+        const double norm = std::sqrt(norm2);
+        step.record(q::orientation_norm, norm);
+        s.q_WB.coeffs() /= norm;
     } else {
+        step.record(q::orientation_norm, s.q_WB.coeffs().stableNorm());
         s.q_WB.coeffs().stableNormalize();
     }
     step.record(q::orientation, s.q_WB);

@@ -24,6 +24,7 @@ void ImplicitGyroscopic::advance(const BodyStep& step, BodyState& s) const
         const Vec3 omega1_W = s.Iinv_W * s.L_W;
         step.record(q::update_angular_velocity, omega1_W);
         s.q_WB.coeffs() += h * orientationRate(omega1_W, s.q_WB).coeffs();
+        if (step.trace != nullptr) step.record(q::se_orientation_norm, orientationNorm(s.q_WB));
         s.q_WB = normalisedOrientation(s.q_WB);
         step.record(q::se_orientation, s.q_WB);
         return;   // the base derives R, I^-1 and omega
@@ -60,6 +61,7 @@ void ImplicitGyroscopic::advance(const BodyStep& step, BodyState& s) const
 
     // r_{n+1} = normalise(r_n + h/2 (0, omega') r_n)
     s.q_WB.coeffs() += h * orientationRate(omega1_W, s.q_WB).coeffs();
+    if (step.trace != nullptr) step.record(q::se_orientation_norm, orientationNorm(s.q_WB));
     s.q_WB = normalisedOrientation(s.q_WB);
     step.record(q::se_orientation, s.q_WB);
 

@@ -134,7 +134,9 @@ void ImplicitMidpoint::advance(const BodyStep& step, BodyState& s) const
         step.record(q::midpoint_body_angular_velocity, omegam_B);
         // c = (1, h/2 omega_m)/|.| = cay(h [omega_m]x);  r_{n+1} = r_n c
         const Vec3 half_B = (0.5 * h) * omegam_B;
-        const Quat c = Quat(1.0, half_B.x(), half_B.y(), half_B.z()).normalized();
+        const Quat c0(1.0, half_B.x(), half_B.y(), half_B.z());
+        step.record(q::cayley_norm, c0.norm());
+        const Quat c = c0.normalized();
         step.record(q::cayley_rotation, c);
         s.q_WB = normalisedOrientation(s.q_WB * c);
         step.record(q::cayley_orientation, s.q_WB);

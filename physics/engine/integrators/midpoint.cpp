@@ -22,6 +22,7 @@ void Midpoint::advance(const BodyStep& step, BodyState& s) const
     step.record(q::midpoint_position, s.x_W);
     s.v_W = y1.v_W;
     step.record(q::midpoint_linear_velocity, s.v_W);
+    if (step.trace != nullptr) step.record(q::midpoint_orientation_norm, orientationNorm(y1.r));
     s.q_WB = normalisedOrientation(y1.r);
     step.record(q::midpoint_orientation, s.q_WB);
     s.L_W = y1.L_W;

@@ -27,13 +27,24 @@ Quat normalisedOrientation(const Quat& r)
     return out;
 }
 
+double orientationNorm(const Quat& r)
+{
+    const double norm2 = r.squaredNorm();
+    return std::isfinite(norm2) ? std::sqrt(norm2) : r.coeffs().stableNorm();
+}
+
+Mat3 inverseInertiaAt(const Quat& r, const MassProperties& mp, InertiaConvention convention)
+{
+    // I^-1 = R I0^-1 R^T (or R^T I0^-1 R), R = R(r / |r|)
+    const Mat3 R_WB = normalisedOrientation(r).toRotationMatrix();
+    return inverseInertiaWorld(R_WB, mp.I0inv_B, convention);
+}
+
 Vec3 angularVelocityAt(const Quat& r, const Vec3& L_W, const MassProperties& mp,
                        InertiaConvention convention)
 {
-    // omega = I^-1(r) L,  I^-1 = R I0^-1 R^T (or R^T I0^-1 R), R = R(r / |r|)
-    const Mat3 R_WB = normalisedOrientation(r).toRotationMatrix();
-    const Mat3 Iinv_W = inverseInertiaWorld(R_WB, mp.I0inv_B, convention);
-    return Iinv_W * L_W;
+    // omega = I^-1(r) L
+    return inverseInertiaAt(r, mp, convention) * L_W;
 }
 
 RigidOdeRate rigidOdeRate(const RigidOdeState& y, const BodyStep& step, int stage)
@@ -44,7 +55,11 @@ RigidOdeRate rigidOdeRate(const RigidOdeState& y, const BodyStep& step, int stag
     step.record(q::stage_velocity, k.xDot, stage);
     k.vDot = step.mp.invM * step.load.F_W;
     // omega = I^-1(r) L,  r' = 1/2 (0, omega) r
-    k.omega_W = angularVelocityAt(y.r, y.L_W, step.mp, step.convention);
+    const Mat3 Iinv_W = inverseInertiaAt(y.r, step.mp, step.convention);
+    step.record(step.convention == InertiaConvention::CourseTemplate ? q::stage_inverse_inertia_template
+                                                                     : q::stage_inverse_inertia,
+                Iinv_W, stage);
+    k.omega_W = Iinv_W * y.L_W;
     step.record(q::stage_angular_velocity, k.omega_W, stage);
     k.rDot = orientationRate(k.omega_W, y.r);
     step.record(q::stage_orientation_rate, k.rDot, stage);

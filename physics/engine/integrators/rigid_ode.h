@@ -48,6 +48,11 @@ Quat orientationRate(const Vec3& omega_W, const Quat& r);
 
 // r / |r|, with the scaled norm when |r|^2 overflows (as explicit Euler does).
 Quat normalisedOrientation(const Quat& r);
+// |r|, the number normalisedOrientation divides by (the scaled norm when |r|^2 overflows).
+double orientationNorm(const Quat& r);
+
+// I^-1(r) = Q I0^-1 Q^T with R = R(r / |r|) (Q = R, or R^T in the template's convention).
+Mat3 inverseInertiaAt(const Quat& r, const MassProperties& mp, InertiaConvention convention);
 
 // omega = I^-1(r) L with R = R(r / |r|): the angular velocity of a (stage) state.
 Vec3 angularVelocityAt(const Quat& r, const Vec3& L_W, const MassProperties& mp,

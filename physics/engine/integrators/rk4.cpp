@@ -29,6 +29,7 @@ void Rk4::advance(const BodyStep& step, BodyState& s) const
     s.q_WB.coeffs() += w * (k1.rDot.coeffs() + 2.0 * k2.rDot.coeffs() + 2.0 * k3.rDot.coeffs() +
                             k4.rDot.coeffs());
     // r /= |r|: the exact flow keeps |r| = 1, RK4 only to O(h^5) per step
+    if (step.trace != nullptr) step.record(q::rk4_orientation_norm, orientationNorm(s.q_WB));
     s.q_WB = normalisedOrientation(s.q_WB);
     step.record(q::rk4_orientation, s.q_WB);
     s.L_W += w * (k1.LDot + 2.0 * k2.LDot + 2.0 * k3.LDot + k4.LDot);

@@ -28,6 +28,7 @@ void SymplecticEuler::advance(const BodyStep& step, BodyState& s) const
     // r_{n+1} = normalise(r_n + h/2 (0, omega') r_n)
     const Quat rDot = orientationRate(omega1_W, s.q_WB);
     s.q_WB.coeffs() += h * rDot.coeffs();
+    if (step.trace != nullptr) step.record(q::se_orientation_norm, orientationNorm(s.q_WB));
     s.q_WB = normalisedOrientation(s.q_WB);
     step.record(q::se_orientation, s.q_WB);
 }

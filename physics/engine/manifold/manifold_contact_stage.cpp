@@ -2,6 +2,7 @@
 
 #include "physics/engine/manifold/box_box_clip.h"
 #include "physics/engine/manifold/box_plane_manifold.h"
+#include "physics/engine/manifold/contact_axis.h"
 #include "physics/engine/manifold/work_limits.h"
 #include "physics/engine/quantities.h"
 #include "physics/engine/course/contact_response.h"
@@ -194,6 +195,7 @@ void ManifoldContactStage::solve(StepContext& ctx)
         const SolverBody& sb = w.bodies[static_cast<std::size_t>(b)];
         if (sb.P_W == Vec3::Zero() && sb.Lc_W == Vec3::Zero()) continue;
         // F_c = P / h
+        record(ctx.trace, q::contact_impulse_sum, b, sb.P_W);
         const Vec3 F_c = sb.P_W / h;
         record(ctx.trace, q::contact_force, b, F_c);
         load.F_W += F_c;
@@ -201,6 +203,7 @@ void ManifoldContactStage::solve(StepContext& ctx)
         // body has I^-1 = 0): the impulses' moments do not turn it.
         if (!ctx.scene.bodies[static_cast<std::size_t>(b)].angularResponse) continue;
         // q_c = L_c / h
+        record(ctx.trace, q::contact_moment_sum, b, sb.Lc_W);
         const Vec3 q_c = sb.Lc_W / h;
         record(ctx.trace, q::contact_torque, b, q_c);
         load.q_W += q_c;
@@ -278,6 +281,7 @@ void ManifoldContactStage::recordPoints(StepContext& ctx) const
     // The accumulated impulses after each iteration (sequential impulses) or substep (soft step)
     const std::vector<PointImpulses>& history = soft ? w.softSolver.history() : w.solver.history();
     const std::size_t stride = static_cast<std::size_t>(soft ? w.softSolver.pointCount() : w.solver.pointCount());
+    const int planeBody = static_cast<int>(ctx.states.size());   // the solver's body for the planes
     int points = 0;
     for (const Manifold& m : w.manifolds) {
         for (int k = 0; k < m.count; ++k) {
@@ -312,7 +316,26 @@ void ManifoldContactStage::recordPoints(StepContext& ctx) const
                                                  ? q::target_normal_velocity_baumgarte
                                                  : q::target_normal_velocity;
                 record(ctx.trace, target, m.a, p.v_target, i);
+                // Which case applied (targetNormalVelocity): a bounce (v_n* > 0) shows its c; else
+                // v_n* = min(0, d/h), d = -s (Baumgarte has its own formula and neither row)
+                if (w.settings.positionFix != PositionFix::Baumgarte) {
+                    if (p.v_target > 0.0) {
+                        record(ctx.trace, q::restitution, m.a, m.restitution, i);
+                    } else {
+                        record(ctx.trace, q::gap_rate, m.a, -p.separation / ctx.scene.dt, i);
+                    }
+                }
             }
+            // m_n = 1 / (1/M_A + 1/M_B + [.]_A + [.]_B), its terms (contact_axis.h)
+            record(ctx.trace, q::r_A_W, m.a, p.r_A_W, i);
+            record(ctx.trace, q::r_B_W, m.a, p.r_B_W, i);
+            const SolverBody& A = w.bodies[static_cast<std::size_t>(m.a)];
+            const SolverBody& B = w.bodies[static_cast<std::size_t>(m.b >= 0 ? m.b : planeBody)];
+            record(ctx.trace, q::inv_mass_a, m.a, A.invM, i);
+            record(ctx.trace, q::inv_mass_b, m.a, B.invM, i);
+            const ContactAxis axis(p.r_A_W, p.r_B_W, m.n_W, A.Iinv_W, B.Iinv_W);
+            record(ctx.trace, q::manifold_rotational_a, m.a, axis.rAxd_W.dot(axis.IArAxd_W), i);
+            record(ctx.trace, q::manifold_rotational_b, m.a, axis.rBxd_W.dot(axis.IBrBxd_W), i);
             record(ctx.trace, q::normal_mass, m.a, p.m_n, i);
             record(ctx.trace, q::warm_start_normal, m.a, p.warm_n, i);
             record(ctx.trace, q::warm_start_tangent, m.a, p.warm_t_W, i);

@@ -98,6 +98,7 @@ private slots:
     void focusTraceSelects();
     void focusTraceKeepsTheStep();
     void focusTraceIsIdempotent();
+    void focusContactsNumbersInTheWholeTrace();
     void focusBody_data();
     void focusBody();
 };
@@ -159,6 +160,23 @@ void TestFocusFilter::focusTraceIsIdempotent()
     const StepTrace twice = focusTrace(once, 2);
     QCOMPARE(rows(twice), rows(once));
     QCOMPARE(contacts(twice), contacts(once));
+}
+
+void TestFocusFilter::focusContactsNumbersInTheWholeTrace()
+{
+    // Body 1 takes part in contacts 1 (plane) and 2 (with box 2); body 2 in 0 and 2;
+    // body 5 in none. Contact c of the selection is contact focusContacts()[c] of the trace.
+    const StepTrace t = handTrace();
+    QCOMPARE(focusContacts(t, 1), (std::vector<int>{1, 2}));
+    QCOMPARE(focusContacts(t, 2), (std::vector<int>{0, 2}));
+    QVERIFY(focusContacts(t, 5).empty());
+    const StepTrace focused = focusTrace(t, 2);
+    const std::vector<int> inWhole = focusContacts(t, 2);
+    QCOMPARE(focused.contacts.size(), inWhole.size());
+    for (size_t c = 0; c < inWhole.size(); ++c) {
+        QCOMPARE(focused.contacts[c].bodyA, t.contacts[static_cast<size_t>(inWhole[c])].bodyA);
+        QCOMPARE(focused.contacts[c].bodyB, t.contacts[static_cast<size_t>(inWhole[c])].bodyB);
+    }
 }
 
 void TestFocusFilter::focusBody_data()
