@@ -139,6 +139,16 @@ void LessonController::applyEditedScene(const SceneDef& scene, const QString& ed
     start(scene, record, info);
 }
 
+void LessonController::openProbe(const SceneDef& scene, const QString& title, const QString& markdown)
+{
+    const Lesson probe{QString(), title, QString::fromStdString(scene.description), QString(), QString(), false};
+    StartedScene info;
+    info.origin = SceneOrigin::Probe;
+    info.lessonMarkdown = markdown;
+    info.statusMessage = tr("Opened %1").arg(title);
+    start(scene, probe, info);
+}
+
 void LessonController::adoptFile(const QString& absolutePath)
 {
     current_.id.clear();

@@ -20,6 +20,7 @@
 #include "app/gui/shell/history_scrubber.h"
 #include "app/gui/shell/keys_dialog.h"
 #include "app/gui/shell/parameter_bar.h"
+#include "app/gui/shell/probe_in_window.h"
 #include "app/gui/shell/quantity_table_actions.h"
 #include "app/gui/shell/run_busy_bar.h"
 #include "app/gui/shell/scene_file_flows.h"
@@ -121,6 +122,7 @@ MainWindow::MainWindow(QWidget* parent)
         derivation_->setFocusBody(-1);
     });
     connect(lessons_, &LessonController::started, this, &MainWindow::onSceneStarted);
+    probe_ = new ProbeInWindow(lessons_, traceModel_, scrubber_, this);   // after: the scene shows first
     connect(lessons_, &LessonController::loadFailed, this, &MainWindow::onSceneLoadFailed);
     connect(docks_.derivationDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible) panels_.refreshIfDirty(derivation_.get());
@@ -225,7 +227,7 @@ void MainWindow::stepLesson(int delta)
 void MainWindow::onSceneStarted(const SceneDef& scene, const StartedScene& info)
 {
     // The lesson list shows the lesson running, or no row for the student's own scene.
-    if (info.origin == SceneOrigin::Lesson || info.origin == SceneOrigin::File) {
+    if (info.origin == SceneOrigin::Lesson || info.origin == SceneOrigin::File || info.origin == SceneOrigin::Probe) {
         const QSignalBlocker block(docks_.lessonList);
         docks_.lessonList->setCurrentRow(lessons_->lessonRow(currentLessonId()));
         if (currentLessonId().isEmpty()) docks_.lessonList->clearSelection();

@@ -45,6 +45,7 @@ class ExerciseActions;
 class HistoryScrubber;
 class ParameterBar;
 class PlotPanel;
+class ProbeInWindow;
 class QuantityTableActions;
 class SceneFileFlows;
 class QuantityPlotPanel;
@@ -98,6 +99,7 @@ public:
     CheckPanel* checkPanel() const { return docks_.checkPanel; }
     ParameterBar* parameterBar() const { return parameterBar_; }
     HistoryScrubber* historyScrubber() const { return scrubber_; }
+    ProbeInWindow* probeInWindow() const { return probe_; }   // Compare with my simulator's probe
     RunBusyBar* runBusyBar() const { return busyBar_; }
     // Plots the quantity of a row of the quantities table (its components, or the
     // length with norm); false (with a note in the status bar) for a group row.
@@ -174,6 +176,7 @@ private:
     ShellActions* actions_ = nullptr;       // menus, keys, toolbar
     SceneFileFlows* files_ = nullptr;       // save, save as, new scene, reload, the editor's Apply
     QuantityTableActions* table_ = nullptr; // copy, show code, plot over time
+    ProbeInWindow* probe_ = nullptr;        // a probe with the student's numbers (Yours), the divergence mark
 
     QTimer* playTimer_ = nullptr;
     PlaybackClock clock_;          // steps per tick, and when the panels are due
