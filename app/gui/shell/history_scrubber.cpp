@@ -5,7 +5,6 @@
 
 #include <QGridLayout>
 #include <QKeyEvent>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
 #include <QStyle>
@@ -101,16 +100,15 @@ HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
     markButton_->setFlat(true);
     markButton_->setFocusPolicy(Qt::TabFocus);
     markButton_->setStyleSheet("QPushButton{color:#b3261e;font-weight:bold;text-align:left;padding:0 4px}");
+    // A row of its own, shown only with a mark: beside the label it would widen the
+    // scrubber and squeeze the docks at 1366 px (see above).
+    markButton_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     markButton_->hide();
     connect(markButton_, &QPushButton::clicked, this, [this] {
         if (mark_ >= 0) emit stepRequested(mark_);
     });
-    auto* labelRow = new QHBoxLayout;
-    labelRow->setContentsMargins(0, 0, 0, 0);
-    labelRow->addWidget(label_);
-    labelRow->addWidget(markButton_);
-    labelRow->addStretch(1);
-    layout->addLayout(labelRow, 1, 1);
+    layout->addWidget(label_, 1, 1);
+    layout->addWidget(markButton_, 2, 1, 1, 4);
     note_ = new QLabel;
     note_->setObjectName("historyNote");
     note_->setStyleSheet("QLabel{color:#b3261e;font-weight:bold}");
@@ -203,9 +201,9 @@ void HistoryScrubber::setDivergenceMark(long n, const QString& detail)
 {
     mark_ = n;
     // The state after n steps, worded as everywhere else (app/core/step_numbering.h).
-    const QString where = tr("First divergence: %1 (n = %2)").arg(steps::stateName(n)).arg(n);
+    const QString where = tr("First divergence: %1").arg(steps::stateName(n));
     markButton_->setText(where);
-    markButton_->setToolTip(tr("%1\n%2\nClick to go there.").arg(where, detail));
+    markButton_->setToolTip(tr("%1 (n = %2)\n%3\nClick to go there.").arg(where).arg(n).arg(detail));
     markButton_->show();
     slider_->setToolTip(tr("%1\n\nThe red mark: %2. %3").arg(sliderTip_, where, detail));
     markOverlay_->update();

@@ -18,10 +18,12 @@ namespace rbw {
 namespace {
 
 // Columns sized to their widest cell, in the order they get their room (Yours, a
-// student simulator's numbers, only while it is shown).
-std::vector<int> valueColumns(const QTreeView* view)
+// student simulator's numbers, only while it is shown; Before unless it gave way to it).
+std::vector<int> valueColumns(const QTreeView* view, bool withBefore)
 {
-    std::vector<int> columns{TraceModel::BeforeColumn, TraceModel::ValueColumn};
+    std::vector<int> columns;
+    if (withBefore || !view->isColumnHidden(TraceModel::BeforeColumn)) columns.push_back(TraceModel::BeforeColumn);
+    columns.push_back(TraceModel::ValueColumn);
     if (!view->isColumnHidden(TraceModel::YoursColumn)) columns.push_back(TraceModel::YoursColumn);
     columns.push_back(TraceModel::FrameColumn);
     columns.push_back(TraceModel::UnitColumn);
@@ -135,7 +137,7 @@ void TraceView::fitColumns()
     const int available = viewport()->width() > 50 ? viewport()->width() : width() - 20;
     const int symbol = std::min(kMaxSymbolWidth, std::max(headerWidth(TraceModel::SymbolColumn),
                                                           widestCell(TraceModel::SymbolColumn)));
-    const std::vector<int> columns = valueColumns(this);
+    std::vector<int> columns = valueColumns(this, true);
     std::vector<int> widths(columns.size());
     auto valuesWidth = [&](std::vector<int>& w) {
         int sum = 0;
@@ -162,15 +164,31 @@ void TraceView::fitColumns()
         quantity = std::max(kMinQuantityWidth, quantityNamesWidth());
     }
     if (model_->nameWrap() != wrapBefore) scheduleDelayedItemsLayout();   // rows change height
-    // Two matrices side by side still too wide: fewer digits in the cells (never below 3).
-    for (int digits = 6; digits >= 3 && symbol + needed + quantity > available; --digits) {
-        model_->setMatrixDigits(digits);
+    auto shrink = [&] {
+        // Two matrices side by side still too wide: fewer digits in the cells (never below 3).
+        for (int digits = 6; digits >= 3 && symbol + needed + quantity > available; --digits) {
+            model_->setMatrixDigits(digits);
+            needed = valuesWidth(widths);
+        }
+        // Still too wide: vectors and quaternions in fewer digits too (never below 4).
+        for (int digits = 6; digits >= 4 && symbol + needed + quantity > available; --digits) {
+            model_->setVectorDigits(digits);
+            needed = valuesWidth(widths);
+        }
+    };
+    shrink();
+    // With a student's numbers (Yours) and still too wide (1366x768): Before gives way,
+    // so that After and Yours stand side by side on screen (the step's start is the
+    // previous step's After; the formula pane shows both), and the digits come back.
+    const bool beforeGives = !isColumnHidden(TraceModel::YoursColumn) && symbol + needed + quantity > available;
+    setColumnHidden(TraceModel::BeforeColumn, beforeGives);
+    if (beforeGives) {
+        columns.erase(columns.begin());
+        widths.erase(widths.begin());
+        model_->setMatrixDigits(7);
+        model_->setVectorDigits(7);
         needed = valuesWidth(widths);
-    }
-    // Still too wide: vectors and quaternions in fewer digits too (never below 4).
-    for (int digits = 6; digits >= 4 && symbol + needed + quantity > available; --digits) {
-        model_->setVectorDigits(digits);
-        needed = valuesWidth(widths);
+        shrink();
     }
     setColumnWidth(TraceModel::QuantityColumn, quantity);
     setColumnWidth(TraceModel::SymbolColumn, symbol);
@@ -194,7 +212,7 @@ void TraceView::onDataChanged(const QModelIndex& topLeft, const QModelIndex& bot
     // A value that grew (playing: -5.8 becomes -5.886) must not be clipped.
     const QModelIndex parent = topLeft.parent();
     for (int r = topLeft.row(); r <= bottomRight.row(); ++r) {
-        for (int c : valueColumns(this)) {
+        for (int c : valueColumns(this, false)) {
             if (c < topLeft.column() || c > bottomRight.column()) continue;
             if (cellWidth(model()->index(r, c, parent)) > columnWidth(c)) {
                 QTimer::singleShot(0, this, &TraceView::fitColumns);   // once, after the batch

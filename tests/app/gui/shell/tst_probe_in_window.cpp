@@ -8,7 +8,8 @@
 //     coloured as a wrong entry of Check my numbers (its tooltip says it differs);
 //   - negative control: an earlier answer of the probe (by the definition of the first
 //     divergence, every number before it agrees) is shown and not marked;
-//   - every Yours cell fits its column (the table's own fitting, TraceView);
+//   - every Yours cell fits its column (the table's own fitting, TraceView), and at
+//     1366x768 After, Yours, Frame and Unit are on screen without scrolling sideways;
 //   - the history slider carries the mark at n, worded by the one step numbering;
 //   - loading a lesson removes the column and the mark.
 #include "app/core/step_numbering.h"
@@ -25,6 +26,7 @@
 #include <QAction>
 #include <QHeaderView>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QSlider>
 #include <QtTest>
 
@@ -178,6 +180,14 @@ void TestProbeInWindow::yoursColumnAndMark()
         }
     };
     fits(QModelIndex());
+    // ... and at 1366x768 After, Yours, Frame and Unit are on screen side by side: the
+    // table does not scroll sideways (Before gives way where they would not all fit).
+    QCOMPARE(view->horizontalScrollBar()->maximum(), 0);
+    for (int c : {int(TraceModel::ValueColumn), int(TraceModel::YoursColumn), int(TraceModel::FrameColumn),
+                  int(TraceModel::UnitColumn)}) {
+        QVERIFY(!view->isColumnHidden(c));
+        QVERIFY2(view->columnViewportPosition(c) + view->columnWidth(c) <= view->viewport()->width(), qPrintable(QString::number(c)));
+    }
 
     // Negative control: before the first divergence nothing is marked. An earlier answer
     // of the probe (its step and body), or else the same answer's earlier quantity.
