@@ -3,6 +3,8 @@
 // --mistake switched on is run from the Tools menu's dialog; the probe with the first
 // divergence is opened in the main window. Then:
 //   - the quantities table shows a "Yours" column, beside After;
+//   - the window's world at the divergence is the workbook's answer there (the scene is
+//     the probe the diagnosis replayed; for a collision probe, with the fitted c);
 //   - at the first divergence's step n, the cell of its body and quantity holds the
 //     student's numbers (the diagnosis's `given`, as the program printed them) and is
 //     coloured as a wrong entry of Check my numbers (its tooltip says it differs);
@@ -20,6 +22,7 @@
 #include "app/gui/shell/history_scrubber.h"
 #include "app/gui/shell/main_window.h"
 #include "app/gui/shell/probe_in_window.h"
+#include "physics/engine/world.h"
 #include "physics/workbook/probes/probe_verdict.h"
 #include "tests/app/gui/shell/window_test_support.h"
 
@@ -29,6 +32,8 @@
 #include <QScrollBar>
 #include <QSlider>
 #include <QtTest>
+
+#include <cmath>
 
 using namespace rbw;
 
@@ -112,6 +117,8 @@ void TestProbeInWindow::yoursColumnAndMark_data()
     QTest::addColumn<QString>("group");     // the dialog's probe group
     QTest::newRow("transposed-inertia") << "--mistake transposed-inertia" << "motion";
     QTest::newRow("lever-arm-from-origin") << "--mistake lever-arm-from-origin" << "motion";
+    // A collision probe: the scene's c is the one fitted to the student's answers.
+    QTest::newRow("impulse-linear-only, c = 0.35") << "--restitution 0.35 --mistake impulse-linear-only" << "collision";
 }
 
 void TestProbeInWindow::yoursColumnAndMark()
@@ -170,6 +177,24 @@ void TestProbeInWindow::yoursColumnAndMark()
     // The student's numbers as the program printed them: the answer itself.
     const probes::Answer& given = run.given[size_t(probe)][size_t(d.answer)];
     QCOMPARE(d.given.front(), given[firstNumberOf(d.quantity)]);
+
+    // The scene in the window is the probe the diagnosis replayed: its state at n is the
+    // workbook's answer beside which the student's differs (the engine and the replay
+    // agree, tst_probes; a collision probe with the c fitted to the student's answers).
+    {
+        const BodyState& state = w.world()->states()[size_t(d.body)];
+        std::vector<double> engine;
+        if (d.quantity == "x") engine = {state.x_W.x(), state.x_W.y(), state.x_W.z()};
+        else if (d.quantity == "v") engine = {state.v_W.x(), state.v_W.y(), state.v_W.z()};
+        else if (d.quantity == "omega") engine = {state.omega_W.x(), state.omega_W.y(), state.omega_W.z()};
+        else engine = {state.q_WB.w(), state.q_WB.x(), state.q_WB.y(), state.q_WB.z()};
+        QCOMPARE(engine.size(), d.expected.size());
+        for (size_t i = 0; i < engine.size(); ++i) {
+            QVERIFY2(std::abs(engine[i] - d.expected[i]) <= d.tolerance,
+                     qPrintable(QStringLiteral("%1[%2]: engine %3, workbook %4").arg(QString::fromStdString(d.quantity)).arg(i)
+                                    .arg(engine[i], 0, 'g', 10).arg(d.expected[i], 0, 'g', 10)));
+        }
+    }
 
     // Every Yours cell fits its column.
     std::function<void(const QModelIndex&)> fits = [&](const QModelIndex& parent) {
