@@ -4,6 +4,7 @@
 #include "app/gui/panels/quantities/trace_model.h"
 #include "app/gui/shell/history_scrubber.h"
 #include "app/gui/shell/lesson_controller.h"
+#include "physics/engine/quantities.h"
 #include "physics/workbook/probes/probe_verdict.h"
 
 #include <optional>
@@ -12,13 +13,13 @@ namespace rbw {
 
 namespace {
 
-// The trace id of the rows that show a `state` line's quantity (physics/engine/quantities.h).
+// The trace id of the rows that show a `state` line's quantity (the catalogue's entry).
 const char* traceIdOf(const std::string& quantity)
 {
-    if (quantity == "x") return "position";
-    if (quantity == "v") return "linear_velocity";
-    if (quantity == "omega") return "angular_velocity";
-    return "orientation";   // "r"
+    if (quantity == "x") return q::position.id;
+    if (quantity == "v") return q::linear_velocity.id;
+    if (quantity == "omega") return q::angular_velocity.id;
+    return q::orientation.id;   // "r"
 }
 
 QString numbers(const std::vector<double>& values)

@@ -2,6 +2,7 @@
 
 #include "app/core/step_numbering.h"
 #include "app/gui/panels/quantities/trace_model.h"
+#include "physics/engine/quantities.h"
 
 #include <QBrush>
 #include <QFont>
@@ -15,9 +16,13 @@ namespace rbw {
 
 namespace {
 
+// The quantities a `state` line answers, by their catalogue entries (x, v, ω, r).
 bool isStateQuantity(std::string_view id)
 {
-    return id == "position" || id == "linear_velocity" || id == "angular_velocity" || id == "orientation";
+    for (const QuantityInfo* info : {&q::position, &q::linear_velocity, &q::angular_velocity, &q::orientation}) {
+        if (id == info->id) return true;
+    }
+    return false;
 }
 
 QString numbers(const std::vector<double>& values)

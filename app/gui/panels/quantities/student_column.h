@@ -25,7 +25,7 @@ namespace rbw {
 struct StudentValue {
     long step = 0;             // the state after `step` steps (n)
     int body = 0;
-    std::string quantityId;    // the trace id of its rows: position, linear_velocity, angular_velocity, orientation
+    std::string quantityId;    // the trace id of its rows (q::position, linear_velocity, angular_velocity, orientation)
     std::vector<double> given;      // the student's numbers (3; orientation 4: w, x, y, z)
     std::vector<double> expected;   // the workbook's, as the diagnosis compares them
     double largest = 0.0;      // the largest |given - expected| of the components
