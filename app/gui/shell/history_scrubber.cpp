@@ -6,6 +6,8 @@
 #include <QGridLayout>
 #include <QKeyEvent>
 #include <QLabel>
+#include <QPainter>
+#include <QStyle>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -16,6 +18,48 @@
 #include <climits>
 
 namespace rbw {
+
+namespace {
+
+// A red tick over the slider at one value (the first divergence); the mouse goes
+// through it to the slider.
+class SliderMark : public QWidget {
+public:
+    SliderMark(QSlider* slider, const long* mark) : QWidget(slider), slider_(slider), mark_(mark)
+    {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        slider->installEventFilter(this);
+    }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (watched == slider_ && (event->type() == QEvent::Resize || event->type() == QEvent::Show)) {
+            setGeometry(slider_->rect());
+        }
+        return QWidget::eventFilter(watched, event);
+    }
+    void paintEvent(QPaintEvent*) override
+    {
+        const long n = *mark_;
+        if (n < slider_->minimum() || n > slider_->maximum() || slider_->maximum() <= slider_->minimum()) return;
+        const int handle = slider_->style()->pixelMetric(QStyle::PM_SliderLength, nullptr, slider_);
+        const int x = QStyle::sliderPositionFromValue(slider_->minimum(), slider_->maximum(), static_cast<int>(n),
+                                                      width() - handle) + handle / 2;
+        QPainter p(this);
+        p.setRenderHint(QPainter::Antialiasing);
+        p.setPen(QPen(QColor(0xb3, 0x26, 0x1e), 2));
+        p.drawLine(x, 1, x, height() - 1);
+        p.setBrush(QColor(0xb3, 0x26, 0x1e));
+        p.drawPolygon(QPolygon({QPoint(x - 4, 0), QPoint(x + 4, 0), QPoint(x, 5)}));
+    }
+
+private:
+    QSlider* slider_;
+    const long* mark_;
+};
+
+} // namespace
 
 HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
     : QWidget(parent)
@@ -46,9 +90,25 @@ HistoryScrubber::HistoryScrubber(Session* session, QWidget* parent)
     connect(slider_, &QSlider::valueChanged, this, &HistoryScrubber::onSliderValueChanged);
     layout->addWidget(slider_, 0, 1);
 
+    sliderTip_ = title->toolTip();
+    markOverlay_ = new SliderMark(slider_, &mark_);
+
     label_ = new QLabel;
     label_->setObjectName("historyLabel");
+    markButton_ = new QPushButton;
+    markButton_->setObjectName("divergenceButton");
+    markButton_->setFlat(true);
+    markButton_->setFocusPolicy(Qt::TabFocus);
+    markButton_->setStyleSheet("QPushButton{color:#b3261e;font-weight:bold;text-align:left;padding:0 4px}");
+    // A row of its own, shown only with a mark: beside the label it would widen the
+    // scrubber and squeeze the docks at 1366 px (see above).
+    markButton_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    markButton_->hide();
+    connect(markButton_, &QPushButton::clicked, this, [this] {
+        if (mark_ >= 0) emit stepRequested(mark_);
+    });
     layout->addWidget(label_, 1, 1);
+    layout->addWidget(markButton_, 2, 1, 1, 4);
     note_ = new QLabel;
     note_->setObjectName("historyNote");
     note_->setStyleSheet("QLabel{color:#b3261e;font-weight:bold}");
@@ -134,6 +194,27 @@ void HistoryScrubber::sync()
     if (h.firstStep() > 0) text += tr(" (from n = %1)").arg(h.firstStep());
     if (blownUp) text += tr(" · the next step blew up");
     label_->setText(text);
+    markOverlay_->update();   // the range changed: the mark moves
+}
+
+void HistoryScrubber::setDivergenceMark(long n, const QString& detail)
+{
+    mark_ = n;
+    // The state after n steps, worded as everywhere else (app/core/step_numbering.h).
+    const QString where = tr("First divergence: %1").arg(steps::stateName(n));
+    markButton_->setText(where);
+    markButton_->setToolTip(tr("%1 (n = %2)\n%3\nClick to go there.").arg(where).arg(n).arg(detail));
+    markButton_->show();
+    slider_->setToolTip(tr("%1\n\nThe red mark: %2. %3").arg(sliderTip_, where, detail));
+    markOverlay_->update();
+}
+
+void HistoryScrubber::clearDivergenceMark()
+{
+    mark_ = -1;
+    markButton_->hide();
+    slider_->setToolTip(sliderTip_);
+    markOverlay_->update();
 }
 
 void HistoryScrubber::showNote(const QString& text)

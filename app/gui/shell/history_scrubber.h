@@ -33,6 +33,15 @@ public:
     // no longer kept, a step not reached). Cleared by the next request.
     void showNote(const QString& text);
 
+    // The first divergence of a student's own simulator from the workbook (Compare with
+    // my simulator → Open in the main window, issue 23): a red mark on the slider at
+    // state n (while n is recorded) and a button "First divergence: after step k = n − 1"
+    // that goes there; `detail` (body, quantity, numbers) is its tooltip and the slider's.
+    void setDivergenceMark(long n, const QString& detail);
+    void clearDivergenceMark();
+    long divergenceMark() const { return mark_; }   // -1: none
+    QPushButton* divergenceButton() const { return markButton_; }
+
     QSlider* slider() const { return slider_; }
     QSpinBox* stepBox() const { return stepBox_; }
     QPushButton* goButton() const { return goButton_; }
@@ -59,6 +68,10 @@ private:
     QTimer* noteTimer_ = nullptr;
     QSpinBox* stepBox_ = nullptr;
     QPushButton* goButton_ = nullptr;
+    QPushButton* markButton_ = nullptr;
+    QWidget* markOverlay_ = nullptr;   // paints the mark over the slider
+    QString sliderTip_;
+    long mark_ = -1;
     bool syncing_ = false;
 };
 

@@ -47,7 +47,8 @@ void LessonController::start(const SceneDef& scene, const Lesson& record, Starte
     emit aboutToStart();
     current_ = record;
     // The lesson text's setup numbers follow the scene (issue 20): new numbers and edits re-read and refill it.
-    info.lessonMarkdown = lessonTextFor(current_, scene, info.origin, info.lessonMarkdown);
+    // (A probe's text is its own, with no published numbers to compare with.)
+    if (info.origin != SceneOrigin::Probe) info.lessonMarkdown = lessonTextFor(current_, scene, info.origin, info.lessonMarkdown);
     info.title = current_.title;
     info.windowTitle = windowTitleFor(current_.title, QFileInfo(info.userFile).fileName());
     if (info.origin == SceneOrigin::Lesson) AppSettings::setLastLesson(current_.id);
@@ -137,6 +138,16 @@ void LessonController::applyEditedScene(const SceneDef& scene, const QString& ed
     info.origin = SceneOrigin::Editor;
     info.userFile = editorFile;
     start(scene, record, info);
+}
+
+void LessonController::openProbe(const SceneDef& scene, const QString& title, const QString& markdown)
+{
+    const Lesson probe{QString(), title, QString::fromStdString(scene.description), QString(), QString(), false};
+    StartedScene info;
+    info.origin = SceneOrigin::Probe;
+    info.lessonMarkdown = markdown;
+    info.statusMessage = tr("Opened %1").arg(title);
+    start(scene, probe, info);
 }
 
 void LessonController::adoptFile(const QString& absolutePath)

@@ -23,7 +23,7 @@ namespace rbw {
 class Session;
 
 // Where a scene came from; the window shows it accordingly.
-enum class SceneOrigin { Lesson, File, NewNumbers, Editor };
+enum class SceneOrigin { Lesson, File, NewNumbers, Editor, Probe };
 
 // What the window shows for a started scene.
 struct StartedScene {
@@ -53,6 +53,10 @@ public:
     bool openNewNumbers(quint64 seed, QString* error = nullptr);
     // The editor's scene; editorFile is the file the editor shows (may be empty).
     void applyEditedScene(const SceneDef& scene, const QString& editorFile);
+    // A probe of Compare with my simulator as a scene (physics' probeScene()), with its
+    // title and the Lesson dock's text; the Yours column and the slider's mark follow it
+    // (ProbeInWindow).
+    void openProbe(const SceneDef& scene, const QString& title, const QString& markdown);
     // The scene was saved to this file: from now on it is the student's own.
     void adoptFile(const QString& absolutePath);
 

@@ -1,16 +1,17 @@
 #include "app/gui/shell/main_window.h"
 
-#include "app/core/focus_filter.h"
 #include "app/core/step_numbering.h"
-#include "app/derivation/derivation_builder.h"
 #include "app/gui/panels/accuracy/accuracy_panel.h"
 #include "app/gui/panels/check/check_panel.h"
+#include "app/gui/panels/check/check_session_panel.h"
+#include "app/gui/panels/derivation/derivation_session_panel.h"
 #include "app/gui/panels/derivation/derivation_view.h"
 #include "app/gui/panels/editor/scene_editor.h"
 #include "app/gui/panels/plots/body_plot_panel.h"
 #include "app/gui/panels/plots/plot_panel.h"
 #include "app/gui/panels/plots/quantity_plot_panel.h"
 #include "app/gui/panels/quantities/body_colour_delegate.h"
+#include "app/gui/panels/quantities/quantities_session_panel.h"
 #include "app/gui/panels/quantities/trace_model.h"
 #include "app/gui/panels/view/scene_view.h"
 #include "app/gui/panels/view/view_snapshot.h"
@@ -19,6 +20,7 @@
 #include "app/gui/shell/history_scrubber.h"
 #include "app/gui/shell/keys_dialog.h"
 #include "app/gui/shell/parameter_bar.h"
+#include "app/gui/shell/probe_in_window.h"
 #include "app/gui/shell/quantity_table_actions.h"
 #include "app/gui/shell/run_busy_bar.h"
 #include "app/gui/shell/scene_file_flows.h"
@@ -29,7 +31,6 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QFileInfo>
 #include <QLabel>
 #include <QListWidget>
 #include <QMessageBox>
@@ -44,23 +45,6 @@
 #include <algorithm>
 
 namespace rbw {
-
-namespace {
-
-// The page shown before the first step: nothing is computed yet.
-QString introPage(const Lesson& lesson)
-{
-    return QStringLiteral(
-               "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><style>"
-               "body{font-family:sans-serif;margin:1.5em;color:#222;background:#fcfcfa}"
-               "h1{font-size:1.2em}p{line-height:1.5}</style></head><body>"
-               "<h1>%1</h1><p>%2</p><p><b>Press Step (S or →)</b> to take the first step. This page then "
-               "writes it out line by line: each formula, the formula with this step's numbers, "
-               "and the result.</p></body></html>")
-        .arg(lesson.title.toHtmlEscaped(), lesson.description.toHtmlEscaped());
-}
-
-} // namespace
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent)
@@ -103,7 +87,15 @@ MainWindow::MainWindow(QWidget* parent)
     clock_.setSpeed(parameterBar_->speed());
 
     docks_ = buildDocks(this, lessons_->lessons(), traceModel_);   // before the menus: the View menu lists every dock
-    panels_ = {docks_.plotPanel, docks_.bodyPlotPanel, docks_.quantityPlots};
+    // The panels that follow the run, told in turn of each scene, step and rewind; the
+    // table, Check my numbers and the derivation catch up at their own pace.
+    tablePanel_ = std::make_unique<QuantitiesSessionPanel>(traceModel_, &session_);
+    checkPanel_ = std::make_unique<CheckSessionPanel>(docks_.checkPanel, &session_, [this] { return currentLessonId(); });
+    derivation_ = std::make_unique<DerivationSessionPanel>(docks_.derivationView, &session_,
+                                                           [this]() -> const Lesson& { return lessons_->current(); });
+    for (SessionPanel* panel : std::initializer_list<SessionPanel*>{tablePanel_.get(), checkPanel_.get(), derivation_.get(),
+                                                                   docks_.plotPanel, docks_.bodyPlotPanel, docks_.quantityPlots})
+        panels_.add(panel);
     sceneFiles_ = new SceneFiles(this);
     files_ = new SceneFileFlows({this, docks_.sceneEditor, docks_.editorDock, sceneFiles_, lessons_, &session_});
     table_ = new QuantityTableActions({docks_.traceView, traceModel_, docks_.codeView, docks_.codeDock, docks_.quantityPlots,
@@ -127,12 +119,13 @@ MainWindow::MainWindow(QWidget* parent)
     connect(lessons_, &LessonController::aboutToStart, this, [this] {
         setPlaying(false);
         alertLabel_->hide();
-        focusBody_ = -1;
+        derivation_->setFocusBody(-1);
     });
     connect(lessons_, &LessonController::started, this, &MainWindow::onSceneStarted);
+    probe_ = new ProbeInWindow(lessons_, traceModel_, scrubber_, this);   // after: the scene shows first
     connect(lessons_, &LessonController::loadFailed, this, &MainWindow::onSceneLoadFailed);
     connect(docks_.derivationDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
-        if (visible && refresh_.isDirty(RefreshScheduler::Derivation)) refreshDerivation();
+        if (visible) panels_.refreshIfDirty(derivation_.get());
     });
     // The PDF is printed asynchronously: report the result when it is written.
     connect(docks_.derivationView, &DerivationView::pdfExported, this,
@@ -144,11 +137,8 @@ MainWindow::MainWindow(QWidget* parent)
     playTimer_->setInterval(PlaybackClock::kTickIntervalMs);   // each tick takes bounded time
     connect(playTimer_, &QTimer::timeout, this, &MainWindow::onPlayTick);
     connect(&session_, &Session::sessionReset, this, &MainWindow::onSessionReset);
-    connect(&session_, &Session::stepRecorded, this, &MainWindow::onStepRecorded);
-    connect(&session_, &Session::rewound, this, [this](long stepIndex) {
-        for (SessionPanel* panel : panels_) panel->rewound(stepIndex);
-        refresh_.mark(RefreshScheduler::All);
-    });
+    connect(&session_, &Session::stepRecorded, this, [this](const StepTrace& trace) { panels_.stepRecorded(trace); });
+    connect(&session_, &Session::rewound, this, [this](long stepIndex) { panels_.rewound(stepIndex); });
     connect(&session_, &Session::stateChanged, this, &MainWindow::onStateChanged);
     connect(&session_, &Session::runFinished, this, &MainWindow::onRunFinished);
     connect(&session_, &Session::goToFinished, this, &MainWindow::onGoToFinished);
@@ -163,10 +153,7 @@ MainWindow::MainWindow(QWidget* parent)
     });
 
     connect(sceneView_, &SceneView::grabStarted, this, [this](int body, QVector3D hit) {
-        if (focusBody_ != body) {
-            focusBody_ = body;   // the derivation of a many-body scene follows this box
-            refresh_.mark(RefreshScheduler::Derivation);
-        }
+        if (derivation_->setFocusBody(body)) panels_.mark(derivation_.get());   // a many-body page follows this box
         session_.beginGrab(body, Vec3(hit.x(), hit.y(), hit.z()));
     });
     connect(sceneView_, &SceneView::grabMoved, this,
@@ -240,7 +227,7 @@ void MainWindow::stepLesson(int delta)
 void MainWindow::onSceneStarted(const SceneDef& scene, const StartedScene& info)
 {
     // The lesson list shows the lesson running, or no row for the student's own scene.
-    if (info.origin == SceneOrigin::Lesson || info.origin == SceneOrigin::File) {
+    if (info.origin == SceneOrigin::Lesson || info.origin == SceneOrigin::File || info.origin == SceneOrigin::Probe) {
         const QSignalBlocker block(docks_.lessonList);
         docks_.lessonList->setCurrentRow(lessons_->lessonRow(currentLessonId()));
         if (currentLessonId().isEmpty()) docks_.lessonList->clearSelection();
@@ -281,8 +268,7 @@ void MainWindow::resetLesson()
 void MainWindow::onSessionReset()
 {
     const SceneDef& scene = session_.world()->scene();
-    traceModel_->setStart(*session_.world());   // the state at t = 0 before the first step
-    for (SessionPanel* panel : panels_) panel->sceneLoaded(*session_.world());
+    panels_.sceneLoaded(*session_.world());
     QStringList names;
     QList<bool> fixed;
     for (const BodyDef& b : scene.bodies) {
@@ -292,13 +278,6 @@ void MainWindow::onSessionReset()
     docks_.bodySwatches->setBodies(names, fixed);
     actions_->updateFollowMenu(scene);
     sceneView_->clearTrails();
-    refresh_.mark(RefreshScheduler::All);
-}
-
-void MainWindow::onStepRecorded(const StepTrace& trace)
-{
-    for (SessionPanel* panel : panels_) panel->stepRecorded(trace);
-    refresh_.mark(RefreshScheduler::All);
 }
 
 void MainWindow::onStateChanged()
@@ -317,15 +296,7 @@ void MainWindow::onStateChanged()
     sceneView_->setSpring(session_.springSegment());
     const bool playing = playTimer_->isActive();
     const bool panelsDue = clock_.panelsDue(playing);
-    const unsigned due = refresh_.due(playing, panelsDue);
-    if (due & RefreshScheduler::Table) {
-        // A new step (or step back, or reset): the table shows its trace.
-        if (trace != nullptr) traceModel_->setTrace(*trace, world->scene());
-        else traceModel_->setStart(*world);
-        refresh_.done(RefreshScheduler::Table);
-    }
-    if (due & RefreshScheduler::Check) updateCheckPanel();
-    if (due & RefreshScheduler::Derivation) refreshDerivation();
+    panels_.refreshDue(playing, panelsDue);   // the table, Check my numbers, the derivation
     // While playing, the actions and the status line change only at the table's
     // pace: every repainted widget is re-uploaded for the GL composition of the window.
     // (The parameter bar follows the session's parametersChanged, which a step never emits.)
@@ -337,31 +308,8 @@ void MainWindow::onStateChanged()
     }
 }
 
-void MainWindow::updateCheckPanel()
-{
-    if (!session_.isLoaded()) return;
-    docks_.checkPanel->setStep(currentLessonId(), session_.worldBeforeCurrentStep(), session_.currentTrace(),
-                               session_.world()->scene());
-    refresh_.done(RefreshScheduler::Check);
-}
-
-void MainWindow::refreshDerivation()
-{
-    if (!session_.isLoaded()) return;
-    const StepTrace* trace = session_.currentTrace();
-    const SceneDef& scene = session_.world()->scene();
-    if (trace == nullptr) {
-        derivationHtml_ = introPage(lessons_->current());
-    } else {
-        const QString lessonDir = QFileInfo(currentScenePath()).absolutePath();
-        // Many bodies: the page writes out one, the one last grabbed (else the first movable).
-        DerivationOptions options;
-        options.focusBody = derivationFocusBody(scene, focusBody_);
-        derivationHtml_ = buildLessonDerivation(*trace, scene, lessonDir, options).html;
-    }
-    docks_.derivationView->showStep(derivationHtml_);
-    refresh_.done(RefreshScheduler::Derivation);
-}
+void MainWindow::refreshDerivation() { panels_.refreshNow(derivation_.get()); }
+QString MainWindow::derivationHtml() const { return derivation_->html(); }
 
 void MainWindow::stepOnce()
 {

@@ -4,8 +4,9 @@
 // the world, its history and the interaction; a LessonController starts every scene
 // (one sequence for lessons, files, new numbers and the editor); ShellActions builds
 // the menus and keys; ExerciseActions the exercise flows; SceneFileFlows the
-// student's files; QuantityTableActions what a table row offers; RefreshScheduler says which
-// panels may catch up with the step; AppSettings keeps the settings. This class wires
+// student's files; QuantityTableActions what a table row offers; RefreshScheduler tells the
+// panels that follow the run (SessionPanel) of each scene, step and rewind, in a loop,
+// and which may catch up with the step; AppSettings keeps the settings. This class wires
 // them: the controls to the session, the session's signals to the panels.
 #pragma once
 
@@ -18,6 +19,8 @@
 
 #include <QList>
 #include <QMainWindow>
+
+#include <memory>
 
 class QAction;
 class QLabel;
@@ -33,12 +36,16 @@ class RunBusyBar;
 class AccuracyPanel;
 class BodyPlotPanel;
 class CheckPanel;
+class CheckSessionPanel;
+class DerivationSessionPanel;
+class QuantitiesSessionPanel;
 class CodeView;
 class DerivationView;
 class ExerciseActions;
 class HistoryScrubber;
 class ParameterBar;
 class PlotPanel;
+class ProbeInWindow;
 class QuantityTableActions;
 class SceneFileFlows;
 class QuantityPlotPanel;
@@ -92,12 +99,13 @@ public:
     CheckPanel* checkPanel() const { return docks_.checkPanel; }
     ParameterBar* parameterBar() const { return parameterBar_; }
     HistoryScrubber* historyScrubber() const { return scrubber_; }
+    ProbeInWindow* probeInWindow() const { return probe_; }   // Compare with my simulator's probe
     RunBusyBar* runBusyBar() const { return busyBar_; }
     // Plots the quantity of a row of the quantities table (its components, or the
     // length with norm); false (with a note in the status bar) for a group row.
     bool plotRowOverTime(const QModelIndex& row, bool norm = false);
     // The HTML last handed to the derivation view (tests, export).
-    QString derivationHtml() const { return derivationHtml_; }
+    QString derivationHtml() const;
     // Every action that has a keyboard shortcut, in menu order (the Help → Keys table).
     QList<QAction*> shortcutActions() const;
     // Steps per second of wall time while playing: 0 means one step per frame.
@@ -138,13 +146,11 @@ private:
     void onSceneStarted(const SceneDef& scene, const StartedScene& info);
     void onSceneLoadFailed(const QString& what, const QStringList& errors);
     void onSessionReset();
-    void onStepRecorded(const StepTrace& trace);
     void onStateChanged();
     void onPlayTick();
     void onRunFinished(int taken);
     void onGoToFinished(long k, bool reached);
     void updateStatus();
-    void updateCheckPanel();
 
     Session session_;
     LessonController* lessons_ = nullptr;
@@ -154,7 +160,13 @@ private:
     TraceModel* traceModel_ = nullptr;
     SceneView* sceneView_ = nullptr;
     ShellDocks docks_;
-    QList<SessionPanel*> panels_;   // told of every reset, step and rewind, in turn
+    // The panels that follow the run (SessionPanel): told of every reset, step and
+    // rewind in turn, each refreshed at its pace. The three below adapt the table,
+    // Check my numbers and the derivation, whose widgets know no session.
+    RefreshScheduler panels_;
+    std::unique_ptr<QuantitiesSessionPanel> tablePanel_;
+    std::unique_ptr<CheckSessionPanel> checkPanel_;
+    std::unique_ptr<DerivationSessionPanel> derivation_;
     QLabel* statusLabel_ = nullptr;
     QLabel* alertLabel_ = nullptr;
     ParameterBar* parameterBar_ = nullptr;
@@ -164,12 +176,10 @@ private:
     ShellActions* actions_ = nullptr;       // menus, keys, toolbar
     SceneFileFlows* files_ = nullptr;       // save, save as, new scene, reload, the editor's Apply
     QuantityTableActions* table_ = nullptr; // copy, show code, plot over time
+    ProbeInWindow* probe_ = nullptr;        // a probe with the student's numbers (Yours), the divergence mark
 
     QTimer* playTimer_ = nullptr;
     PlaybackClock clock_;          // steps per tick, and when the panels are due
-    RefreshScheduler refresh_;     // which panels do not show the current step yet
-    int focusBody_ = -1;           // the body last grabbed: a many-body derivation follows it
-    QString derivationHtml_;
 };
 
 } // namespace rbw

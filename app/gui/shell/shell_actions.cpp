@@ -10,6 +10,7 @@
 #include "app/gui/shell/keys_dialog.h"
 #include "app/gui/shell/main_window.h"
 #include "app/gui/shell/parameter_bar.h"
+#include "app/gui/shell/probe_in_window.h"
 #include "app/gui/shell/scene_files.h"
 
 #include <QAction>
@@ -184,7 +185,13 @@ ShellActions::ShellActions(MainWindow* window, ExerciseActions* exercise)
     compare->setToolTip(tr("Run your own simulator through the probes and name its mistakes"));
     connect(compare, &QAction::triggered, w, [w] {
         auto* dialog = w->findChild<SimulatorDialog*>(QString(), Qt::FindDirectChildrenOnly);
-        if (dialog == nullptr) dialog = new SimulatorDialog(w);
+        if (dialog == nullptr) {
+            dialog = new SimulatorDialog(w);
+            // Open in the main window: the probe as the scene, the student's numbers in the table.
+            connect(dialog, &SimulatorDialog::openInMainWindowRequested, w, [w, dialog](int probe) {
+                if (w->probeInWindow()->open(dialog->outcome().run, dialog->outcome().right, probe)) w->activateWindow();
+            });
+        }
         dialog->show();
         dialog->raise();
         dialog->activateWindow();

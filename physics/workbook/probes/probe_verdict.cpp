@@ -86,6 +86,49 @@ std::optional<Divergence> firstDivergence(const Probe& probe, const Answers& exp
     return std::nullopt;
 }
 
+std::vector<QuantityDifference> answerDifferences(const Probe& probe, const Answers& expected, const Answers& given,
+                                                  double margin)
+{
+    std::vector<QuantityDifference> out;
+    const std::vector<double> s = scales(expected);
+    const std::vector<AnswerSlot> slots = answerSlots(probe);
+    const std::size_t n = std::min({expected.size(), given.size(), slots.size()});
+    for (std::size_t k = 0; k < n; ++k) {
+        const Answer& e = expected[k];
+        const Answer& g = given[k];
+        for (int bi = 0; bi < 4; ++bi) {
+            const Block& b = kBlocks[bi];
+            if (static_cast<int>(e.size()) < b.first + b.size || static_cast<int>(g.size()) < b.first + b.size) continue;
+            QuantityDifference q;
+            q.answer = static_cast<int>(k);
+            q.step = slots[k].step;
+            q.body = slots[k].body;
+            q.quantity = b.name;
+            q.tolerance = margin * kRelativeTolerance * s[bi];
+            q.expected = slice(e, b);
+            q.given = slice(g, b);
+            // r and -r are the same orientation: compare with the sign that fits better
+            if (bi == 3) {
+                double plus = 0.0, minus = 0.0;
+                for (int i = 0; i < b.size; ++i) {
+                    plus = std::max(plus, std::abs(q.given[i] - q.expected[i]));
+                    minus = std::max(minus, std::abs(q.given[i] + q.expected[i]));
+                }
+                if (minus < plus) {
+                    for (double& v : q.expected) v = -v;
+                }
+            }
+            for (int i = 0; i < b.size; ++i) {
+                const double d = std::abs(q.given[i] - q.expected[i]);
+                if (!(d <= q.tolerance)) q.differs = true;   // nan: differs
+                q.largest = std::isnan(d) || std::isnan(q.largest) ? d + q.largest : std::max(q.largest, d);
+            }
+            out.push_back(std::move(q));
+        }
+    }
+    return out;
+}
+
 const char* verdictName(Verdict v)
 {
     switch (v) {

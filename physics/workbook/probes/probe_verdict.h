@@ -38,6 +38,24 @@ struct Divergence {
 std::optional<Divergence> firstDivergence(const Probe& probe, const Answers& expected, const Answers& given,
                                           double margin = 1.0);
 
+// How one quantity (x, v, omega or r) of one answer compares with the expected one, by
+// the rule of firstDivergence (the same tolerance and margin, r up to its sign): the
+// first entry that `differs`, in order, is firstDivergence's answer and quantity.
+struct QuantityDifference {
+    int answer = 0;         // index among the probe's `state` answers
+    int step = 0;           // steps before it (answerSlots)
+    int body = 0;
+    std::string quantity;   // "x", "v", "omega" or "r"
+    std::vector<double> expected, given;   // 3 (r: 4) numbers; expected with r's sign turned to fit
+    double largest = 0.0;   // the largest |given - expected| of its components (nan if one is nan)
+    double tolerance = 0.0; // the allowed |difference|, times the margin
+    bool differs = false;
+};
+
+// Every quantity of every answer both sides give, in the order firstDivergence reads them.
+std::vector<QuantityDifference> answerDifferences(const Probe& probe, const Answers& expected, const Answers& given,
+                                                  double margin = 1.0);
+
 enum class Verdict { Matches, Explained, PartlyExplained, Unexplained };
 const char* verdictName(Verdict v);   // "matches", "explained", "partly-explained", "unexplained"
 

@@ -115,7 +115,7 @@ Answers replay(const Probe& probe, const ReplayModel& model)
     return answers;
 }
 
-Answers replayWithEngine(const Probe& probe, InertiaConvention convention)
+SceneDef probeScene(const Probe& probe, InertiaConvention convention)
 {
     SceneDef scene;
     scene.name = probe.name;
@@ -159,8 +159,12 @@ Answers replayWithEngine(const Probe& probe, InertiaConvention convention)
         }
     }
     scene.steps = steps;
+    return scene;
+}
 
-    World world(std::move(scene));
+Answers replayWithEngine(const Probe& probe, InertiaConvention convention)
+{
+    World world(probeScene(probe, convention));
     Answers answers;
     for (const Command& c : probe.commands) {
         if (c.kind == CommandKind::Step) world.step();

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "physics/engine/inertia.h"
+#include "physics/engine/scene.h"
 #include "physics/workbook/checker/mistakes.h"
 #include "physics/workbook/probes/probes.h"
 
@@ -50,6 +51,14 @@ std::vector<std::string> modelIds(const ReplayModel& model);
 
 // The answers of a simulator with `model` to the probe's `state` commands.
 Answers replay(const Probe& probe, const ReplayModel& model);
+
+// The probe as an engine scene: its bodies (named "body 0", "body 1", …) at their
+// add_body, set_orientation and set_velocity values, each apply_force as a force on
+// its body for the one step after it, h of its steps, `steps` its number of steps;
+// explicit Euler, no gravity, box collisions on (the scene's defaults otherwise: c = 1).
+// What replayWithEngine() runs, and what the app opens in its main window (Compare
+// with my simulator → Open in the main window).
+SceneDef probeScene(const Probe& probe, InertiaConvention convention = InertiaConvention::Standard);
 
 // The same probe in the engine's world (explicit Euler in the TUM order, no gravity,
 // box collisions on): with the standard inertia convention, the right algorithm's

@@ -442,6 +442,7 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const
         return {};
     }
     const TraceEntry& e = trace_.entries[n.entry];
+    if (index.column() == YoursColumn) return studentData(n.entry, role);
     switch (role) {
     case Qt::DisplayRole:
         switch (index.column()) {
@@ -552,6 +553,7 @@ QVariant TraceModel::headerData(int section, Qt::Orientation orientation, int ro
     case UnitColumn: return tr("Unit");
     case SourceColumn: return tr("Source");
     case FormulaColumn: return tr("Formula (LaTeX)");
+    case YoursColumn: return tr("Yours");
     }
     return {};
 }

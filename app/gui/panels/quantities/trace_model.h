@@ -15,6 +15,7 @@
 // has all seven.
 #pragma once
 
+#include "app/gui/panels/quantities/student_column.h"
 #include "physics/engine/scene.h"
 #include "physics/engine/trace.h"
 
@@ -44,6 +45,7 @@ public:
         UnitColumn,
         SourceColumn,
         FormulaColumn,
+        YoursColumn,   // the student's own simulator's value (StudentColumn); the view hides it without one
         ColumnCount
     };
     enum Role {
@@ -82,6 +84,12 @@ public:
     // 0: one line. A name is never elided. The view lays its rows out again.
     void setNameWrap(int pixels, const QFont& font);
     int nameWrap() const { return nameWrapPx_; }
+    // The student's own numbers (Compare with my simulator → Open in the main window):
+    // the Yours column shows them for the state rows of the step shown; empty: no column.
+    void setStudentValues(std::vector<StudentValue> values, const QString& source);
+    void clearStudentValues();
+    bool hasStudentValues() const { return !student_.isEmpty(); }
+    const StudentColumn& studentColumn() const { return student_; }
     // Whether this step's integration rows come before a collision impulse.
     bool integrationBeforeImpulse() const { return impulseAfterIntegration_; }
 
@@ -113,6 +121,7 @@ private:
     std::vector<Node> nodes_;     // nodes_[0] is the root
     std::vector<int> rowOfEntry_; // node index of each entry
     bool startOnly_ = false;      // setStart: the rows are a state, not a step
+    StudentColumn student_;       // the Yours column's numbers
     bool impulseAfterIntegration_ = false;
     int matrixDigits_ = 7;
     int vectorDigits_ = 7;
@@ -120,6 +129,7 @@ private:
     QFont nameFont_;
     QString wrappedName(const QString& name) const;
     QString cellText(const TraceValue& value) const;
+    QVariant studentData(int entry, int role) const;
 };
 
 } // namespace rbw

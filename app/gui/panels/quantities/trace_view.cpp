@@ -9,6 +9,7 @@
 #include <QTimer>
 
 #include <functional>
+#include <vector>
 
 #include <algorithm>
 
@@ -16,9 +17,18 @@ namespace rbw {
 
 namespace {
 
-// Columns sized to their widest cell, in the order they get their room.
-constexpr int kValueColumns[] = {TraceModel::BeforeColumn, TraceModel::ValueColumn, TraceModel::FrameColumn,
-                                 TraceModel::UnitColumn};
+// Columns sized to their widest cell, in the order they get their room (Yours, a
+// student simulator's numbers, only while it is shown; Before unless it gave way to it).
+std::vector<int> valueColumns(const QTreeView* view, bool withBefore)
+{
+    std::vector<int> columns;
+    if (withBefore || !view->isColumnHidden(TraceModel::BeforeColumn)) columns.push_back(TraceModel::BeforeColumn);
+    columns.push_back(TraceModel::ValueColumn);
+    if (!view->isColumnHidden(TraceModel::YoursColumn)) columns.push_back(TraceModel::YoursColumn);
+    columns.push_back(TraceModel::FrameColumn);
+    columns.push_back(TraceModel::UnitColumn);
+    return columns;
+}
 
 void forEachIndex(const QAbstractItemModel* model, const QModelIndex& parent, int column,
                   const std::function<void(const QModelIndex&)>& f)
@@ -50,7 +60,11 @@ TraceView::TraceView(TraceModel* model, QWidget* parent)
     header()->setMinimumSectionSize(24);
     // The formula is typeset in the pane below the table, not shown as raw LaTeX.
     setColumnHidden(TraceModel::FormulaColumn, true);
+    // A student's own numbers (Yours) sit beside the workbook's After, shown only with them.
+    header()->moveSection(header()->visualIndex(TraceModel::YoursColumn), header()->visualIndex(TraceModel::ValueColumn) + 1);
+    setColumnHidden(TraceModel::YoursColumn, true);
     connect(model, &QAbstractItemModel::modelReset, this, [this] {
+        setColumnHidden(TraceModel::YoursColumn, !model_->hasStudentValues());
         expandAll();
         spanGroupRows(QModelIndex());
         fitColumns();
@@ -123,15 +137,16 @@ void TraceView::fitColumns()
     const int available = viewport()->width() > 50 ? viewport()->width() : width() - 20;
     const int symbol = std::min(kMaxSymbolWidth, std::max(headerWidth(TraceModel::SymbolColumn),
                                                           widestCell(TraceModel::SymbolColumn)));
-    auto valuesWidth = [&](int* widths) {
+    std::vector<int> columns = valueColumns(this, true);
+    std::vector<int> widths(columns.size());
+    auto valuesWidth = [&](std::vector<int>& w) {
         int sum = 0;
-        for (int k = 0; k < 4; ++k) {
-            widths[k] = std::max(headerWidth(kValueColumns[k]), widestCell(kValueColumns[k]));
-            sum += widths[k];
+        for (size_t k = 0; k < columns.size(); ++k) {
+            w[k] = std::max(headerWidth(columns[k]), widestCell(columns[k]));
+            sum += w[k];
         }
         return sum;
     };
-    int widths[4];
     model_->setMatrixDigits(7);
     model_->setVectorDigits(7);
     int needed = valuesWidth(widths);
@@ -149,20 +164,44 @@ void TraceView::fitColumns()
         quantity = std::max(kMinQuantityWidth, quantityNamesWidth());
     }
     if (model_->nameWrap() != wrapBefore) scheduleDelayedItemsLayout();   // rows change height
-    // Two matrices side by side still too wide: fewer digits in the cells (never below 3).
-    for (int digits = 6; digits >= 3 && symbol + needed + quantity > available; --digits) {
-        model_->setMatrixDigits(digits);
+    auto shrink = [&] {
+        // Two matrices side by side still too wide: fewer digits in the cells (never below 3).
+        for (int digits = 6; digits >= 3 && symbol + needed + quantity > available; --digits) {
+            model_->setMatrixDigits(digits);
+            needed = valuesWidth(widths);
+        }
+        // Still too wide: vectors and quaternions in fewer digits too (never below 4).
+        for (int digits = 6; digits >= 4 && symbol + needed + quantity > available; --digits) {
+            model_->setVectorDigits(digits);
+            needed = valuesWidth(widths);
+        }
+    };
+    shrink();
+    // With a student's numbers (Yours) and still too wide (1366x768): Before gives way,
+    // so that After and Yours stand side by side on screen (the step's start is the
+    // previous step's After; the formula pane shows both), and the digits come back.
+    const bool beforeGives = !isColumnHidden(TraceModel::YoursColumn) && symbol + needed + quantity > available;
+    setColumnHidden(TraceModel::BeforeColumn, beforeGives);
+    if (beforeGives) {
+        columns.erase(columns.begin());
+        widths.erase(widths.begin());
+        model_->setMatrixDigits(7);
+        model_->setVectorDigits(7);
         needed = valuesWidth(widths);
-    }
-    // Still too wide: vectors and quaternions in fewer digits too (never below 4).
-    for (int digits = 6; digits >= 4 && symbol + needed + quantity > available; --digits) {
-        model_->setVectorDigits(digits);
-        needed = valuesWidth(widths);
+        shrink();
     }
     setColumnWidth(TraceModel::QuantityColumn, quantity);
     setColumnWidth(TraceModel::SymbolColumn, symbol);
-    for (int k = 0; k < 4; ++k) setColumnWidth(kValueColumns[k], widths[k]);
-    setColumnWidth(TraceModel::SourceColumn, std::max(headerWidth(TraceModel::SourceColumn), widestCell(TraceModel::SourceColumn)));
+    for (size_t k = 0; k < columns.size(); ++k) setColumnWidth(columns[k], widths[k]);
+    // Source: the room that is left (issue 20: it made the table scroll sideways at
+    // 1366x768), elided there; its tooltip has the whole path and line. With less room
+    // than a section's minimum it is not shown at all: the formula pane below the table
+    // and every row's tooltip say where the value is computed.
+    const int sourceLeft = available - quantity - symbol - needed;
+    setColumnHidden(TraceModel::SourceColumn, sourceLeft < header()->minimumSectionSize());
+    setColumnWidth(TraceModel::SourceColumn,
+                   std::min(std::max(headerWidth(TraceModel::SourceColumn), widestCell(TraceModel::SourceColumn)),
+                            std::max(header()->minimumSectionSize(), sourceLeft)));
     horizontalScrollBar()->setValue(0);
     viewport()->update();
     fitting_ = false;
@@ -173,7 +212,7 @@ void TraceView::onDataChanged(const QModelIndex& topLeft, const QModelIndex& bot
     // A value that grew (playing: -5.8 becomes -5.886) must not be clipped.
     const QModelIndex parent = topLeft.parent();
     for (int r = topLeft.row(); r <= bottomRight.row(); ++r) {
-        for (int c : kValueColumns) {
+        for (int c : valueColumns(this, false)) {
             if (c < topLeft.column() || c > bottomRight.column()) continue;
             if (cellWidth(model()->index(r, c, parent)) > columnWidth(c)) {
                 QTimer::singleShot(0, this, &TraceView::fitColumns);   // once, after the batch

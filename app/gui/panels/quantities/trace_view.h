@@ -4,8 +4,13 @@
 // are lowered, down to 3, when two matrices side by side would not fit; the tooltip
 // has all of them); Frame and Unit stay narrow; the Quantity column is as wide as its
 // widest name (never elided; a group's label spans its whole row), the Symbol column
-// at most kMaxSymbolWidth, and Source the rest. Every new step, scrub or resize fits
-// the columns again; a value that grows while playing widens its column.
+// at most kMaxSymbolWidth, and Source the rest (elided there, its tooltip has the whole
+// path; hidden when less than a section's minimum is left, the formula pane saying where
+// the value is computed: the table never scrolls sideways for it). With a student simulator's numbers
+// (TraceModel's Yours column, beside After) that column is fitted like the values, and
+// where they do not all fit (1366x768) Before gives way to it. Every
+// new step, scrub or resize fits the columns again; a value that grows while playing
+// widens its column.
 #pragma once
 
 #include <QTreeView>

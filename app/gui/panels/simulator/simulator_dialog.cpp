@@ -22,6 +22,8 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <algorithm>
+
 namespace rbw {
 
 namespace {
@@ -120,6 +122,13 @@ SimulatorDialog::SimulatorDialog(QWidget* parent) : QDialog(parent)
     result_ = new SimulatorResultView(this);
     auto* close = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(close, &QDialogButtonBox::rejected, this, &SimulatorDialog::reject);
+    // The selected probe as the main window's scene, the student's numbers in its table.
+    openInWindow_ = close->addButton(tr("&Open in the main window"), QDialogButtonBox::ActionRole);
+    openInWindow_->setObjectName("openInMainWindowButton");
+    openInWindow_->setToolTip(tr("Open the selected probe (else the one with the first divergence) as the main "
+                                 "window's scene: the quantities table gets a Yours column with your program's "
+                                 "numbers, the history slider a mark at the first divergence"));
+    connect(openInWindow_, &QPushButton::clicked, this, &SimulatorDialog::openInMainWindow);
 
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(intro);
@@ -256,9 +265,25 @@ void SimulatorDialog::onFinished()
     emit checkFinished();
 }
 
+void SimulatorDialog::openInMainWindow()
+{
+    if (!canOpenInMainWindow()) return;
+    int probe = result_->selectedProbe();
+    if (probe < 0 || probe >= static_cast<int>(outcome_.run.probes.size())) probe = std::max(0, outcome_.run.diagnosis.divergenceProbe);
+    emit openInMainWindowRequested(probe);
+}
+
+bool SimulatorDialog::canOpenInMainWindow() const
+{
+    const DiagnoseRun& run = outcome_.run;
+    return !isRunning() && run.failure.isEmpty() && !run.probes.empty() && run.given.size() == run.probes.size() &&
+           outcome_.right.size() == run.probes.size();
+}
+
 void SimulatorDialog::updateControls()
 {
     const bool running = isRunning();
+    openInWindow_->setEnabled(canOpenInMainWindow());
     run_->setEnabled(!running);
     cancel_->setEnabled(running);
     timeout_->setEnabled(useProgram_->isChecked());

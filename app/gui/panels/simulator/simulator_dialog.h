@@ -58,8 +58,15 @@ public:
     const CompareOutcome& outcome() const { return outcome_; }
     SimulatorResultView* resultView() const { return result_; }
 
+    // "Open in the main window": asks for the selected probe (else the one with the first
+    // divergence) of a diagnosed run; the shell opens it (openInMainWindowRequested).
+    void openInMainWindow();
+    bool canOpenInMainWindow() const;
+
 signals:
     void checkFinished();   // a run ended: diagnosed, failed or cancelled
+    // The shell opens probe `probe` of outcome() as the main window's scene.
+    void openInMainWindowRequested(int probe);
 
 protected:
     void reject() override;   // Close while running cancels first
@@ -79,6 +86,7 @@ private:
     QDoubleSpinBox* timeout_ = nullptr;
     QPushButton* run_ = nullptr;
     QPushButton* cancel_ = nullptr;
+    QPushButton* openInWindow_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QLabel* status_ = nullptr;
     SimulatorResultView* result_ = nullptr;

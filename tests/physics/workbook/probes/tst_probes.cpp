@@ -21,6 +21,7 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <optional>
 
 using namespace rbw::probes;
@@ -155,6 +156,47 @@ private slots:
         if (!transposed) {
             QVERIFY(firstDivergence(p, engine, replayWithEngine(p, rbw::InertiaConvention::CourseTemplate)));
         }
+    }
+
+    // answerDifferences (what the app's "Yours" column marks) reads the answers by
+    // firstDivergence's rule: its first entry that differs is firstDivergence's answer and
+    // quantity, and with the right algorithm's own answers nothing differs (the negative
+    // control). probeScene is the scene replayWithEngine runs: one body per add_body and
+    // the probe's number of steps (motion-02: one body, 3 steps, replayMatchesHandDerivation).
+    void answerDifferencesAgreeWithFirstDivergence_data()
+    {
+        QTest::addColumn<int>("mistake");
+        for (Mistake m : {Mistake::None, Mistake::TransposedInertia, Mistake::LeverArmFromOrigin})
+            QTest::newRow(m == Mistake::None ? "right" : modelId({m, 0}).c_str()) << static_cast<int>(m);
+    }
+    void answerDifferencesAgreeWithFirstDivergence()
+    {
+        QFETCH(int, mistake);
+        int differing = 0;
+        for (const Probe& p : motionProbes()) {
+            const Answers right = replay(p, {});
+            const Answers given = replay(p, {static_cast<Mistake>(mistake), 0});
+            const std::optional<Divergence> d = firstDivergence(p, right, given);
+            const std::vector<QuantityDifference> all = answerDifferences(p, right, given);
+            QCOMPARE(all.size(), 4 * right.size());   // x, v, omega, r of every answer
+            const auto first = std::find_if(all.begin(), all.end(), [](const QuantityDifference& q) { return q.differs; });
+            QCOMPARE(first != all.end(), d.has_value());
+            if (d) {
+                QCOMPARE(first->answer, d->answer);
+                QCOMPARE(first->step, d->step);
+                QCOMPARE(first->body, d->body);
+                QCOMPARE(first->quantity, d->quantity);
+                QCOMPARE(first->tolerance, d->tolerance);
+            }
+            for (const QuantityDifference& q : all) {
+                QCOMPARE(q.differs, q.largest > q.tolerance);
+                differing += q.differs ? 1 : 0;
+            }
+        }
+        QCOMPARE(differing > 0, static_cast<Mistake>(mistake) != Mistake::None);
+        const rbw::SceneDef scene = probeScene(motionProbes()[1]);
+        QCOMPARE(scene.bodies.size(), std::size_t(1));
+        QCOMPARE(scene.steps, 3L);
     }
 
     void everyMistakeHasAScope()

@@ -12,7 +12,8 @@
 // Negative control: the old sizing (resize to contents, Symbol at most 48 px,
 // Quantity at most a third) in the same 612 px leaves a value or Unit off screen.
 //
-// Also: the start before the first step; a collision step lists the collision first
+// Nothing scrolls sideways: the Source column takes the room that is left (its tooltip
+// has the whole path). Also: the start before the first step; a collision step lists the collision first
 // and says that integration's After is before the impulse.
 #include "app/gui/panels/quantities/trace_model.h"
 #include "app/gui/panels/quantities/trace_view.h"
@@ -198,6 +199,11 @@ void TestTraceView::valuesFitAt1366()
     QVERIFY2(bad.isEmpty(), qPrintable(bad.mid(0, 8).join('\n')));
     QVERIFY(model.matrixDigits() >= 3);
     QCOMPARE(view.horizontalScrollBar()->value(), 0);
+    // Nothing to scroll sideways: Source takes the room that is left, elided there, with
+    // its whole path in the tooltip (issue 20, item 3).
+    QCOMPARE(view.horizontalScrollBar()->maximum(), 0);
+    QVERIFY(view.header()->sectionPosition(TraceModel::SourceColumn) + view.columnWidth(TraceModel::SourceColumn)
+            <= view.viewport()->width());
 
     // Playing on: the same rows with new values (dataChanged only); still no clipping.
     for (int k = 0; k < 7; ++k) QVERIFY(s.world->step(&s.trace).ok);
