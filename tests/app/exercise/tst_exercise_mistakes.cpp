@@ -12,11 +12,8 @@
 
 #include "app/exercise/exercise.h"
 #include "app/exercise/exercise_mistakes.h"
-#include "app/scene/scene_loader.h"
 #include "physics/engine/world.h"
 #include "physics/workbook/checker/checker.h"
-#include "physics/workbook/checker/follow_through.h"
-#include "physics/workbook/checker/model_inputs.h"
 #include "physics/workbook/checker/mistakes.h"
 
 #include <QFile>
@@ -26,6 +23,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
 #include <map>
 #include <numeric>
 
@@ -89,13 +87,10 @@ QString catalogueId(const QString& model)
 
 // Why a one-step model shows in no exercise, each reason checked by a test of this file
 // over every draw (named in the text). A model that shows nowhere without a reason here
-// fails catalogueTableAgrees: the doc never says "no exercise" without saying why.
-const std::map<QString, QString> kWhyNoExercise{
-    {"impulse-body-inverse-inertia",
-     "no exercise: in every draw each contact's body is a cube (I₀⁻¹ the same in every frame), a particle "
-     "(no angular response) or turned about the axis of x_a × n (exercise 07's boxes), so I₀⁻¹ and "
-     "R I₀⁻¹ Rᵀ give the same term (measured: `tst_exercise_mistakes`, `whyBodyInverseInertiaCannotShow`)"},
-};
+// fails catalogueTableAgrees: the doc never says "no exercise" without saying why. Empty
+// while every one-step model shows in some exercise (impulse-body-inverse-inertia, the last
+// one here, shows in exercise 03 since its box B is no cube: bodyInverseInertiaShowsInTwoBoxes).
+const std::map<QString, QString> kWhyNoExercise{};
 
 // The measured "shows in" cell of one model: the exercises in which it (any of its
 // variants) changes some answer in every draw; a several-step model is named by no
@@ -354,68 +349,88 @@ private slots:
         QCOMPARE(showsInCell(*rbw::findMistake("gravity-always-on"), reports_),
                  QString("**never in a one-step check** (simulator only)"));
         QCOMPARE(showsInCell(*rbw::findMistake("omega-accumulated"), reports_), QString("exercise 01"));
-        QVERIFY(showsInCell(*rbw::findMistake("impulse-body-inverse-inertia"), reports_).startsWith("no exercise: "));
+        QCOMPARE(showsInCell(*rbw::findMistake("impulse-body-inverse-inertia"), reports_), QString("exercise 03"));
     }
 
-    // kWhyNoExercise's reason for impulse-body-inverse-inertia, over every draw of every
-    // exercise: each side of each contact of the key is a cube (I0^-1 = k E), has no
-    // angular response (I^-1 = 0 in the contact), or is turned about the axis of
-    // u = x_a x n (R^T u = u), so u.(I0^-1 u) = u.(R I0^-1 R^T u): the model's term is the
-    // right one. Negative control: lesson 1's box (not a cube) turned 90 degrees about z
-    // with u = (1, 0, 0) is none of these, and there the two terms differ.
-    void whyBodyInverseInertiaCannotShow()
+    // impulse-body-inverse-inertia (the impulse's angular terms with I0^-1, not R I0^-1 R^T)
+    // shows in exercise 03, whose box B is 1.4 x 1 x 0.6 in every draw (lessons/03-two-box-
+    // collision/exercise.json, a range of one value). Hand derivation, seed 1: the draw is
+    // M_A = 2, M_B = 0.5, v_A = (1.5, 0, 0), v_B = (-1.5, 0, 0), c = 0.7. B's sides sum to 3,
+    // like the lesson's unit cube, so its nearest corner, R (0.7, 0.5, 0.3) from its centre
+    // (R: 2.186276 rad about (0, -1, 1), first row -(1, 1, 1)/sqrt 3), is 3/(2 sqrt 3) =
+    // 0.866025 behind B's centre, 1.916025 - 0.866025 = 1.05, 0.05 from A's face x = 1;
+    // each step closes 0.01 * 3 = 0.03, so step 0 ends 0.02 apart and step 1 (ending 0.01
+    // inside) is the first contact. x_b = R (0.7, 0.5, 0.3) = (-sqrt 3/2, (sqrt 3 + 1)/10,
+    // (sqrt 3 - 1)/10) = (-0.866025, 0.273205, 0.073205), n = (-1, 0, 0),
+    // u = x_b x n = (0, -0.073205, 0.273205). I0_B^-1 = (12/M_B) diag(1/(b^2+c^2),
+    // 1/(a^2+c^2), 1/(a^2+b^2)) = 24 diag(1/1.36, 1/2.32, 1/2.96)
+    // = diag(17.647059, 10.344828, 8.108108).
+    // Right: [(I_B^-1 u) x x_b].n = u.(R I0^-1 R^T u) = u_B.(I0^-1 u_B) with
+    // u_B = R^T u = (0.7, 0.5, 0.3) x (R^T n) = (0.7, 0.5, 0.3) x (1, 1, 1)/sqrt 3
+    // = (0.2, -0.4, 0.2)/sqrt 3: (0.04 * 17.647059 + 0.16 * 10.344828 + 0.04 * 8.108108)/3
+    // = 0.895126. The mistake: u.(I0^-1 u) = 0.073205^2 * 10.344828 + 0.273205^2 * 8.108108
+    // = 0.660635. A is a cube (I^-1 = 0.75 E in every frame): its term is the same either
+    // way, 0.75 |(0, -0.073205, 0.773205)|^2 = 0.452404. Denominator 1/2 + 1/0.5 + 0.452404
+    // + 0.895126 = 3.847530, numerator 1.7 * 3 = 5.1: J = 1.325526; with the mistake
+    // 2.5 + 0.452404 + 0.660635 = 3.613039, J = 1.411554.
+    void bodyInverseInertiaShowsInTwoBoxes()
     {
-        int sides = 0;
-        for (const QString& lesson : kLessons) {
-            const rbw::ExerciseSpec spec = lessonSpec(lesson);
-            for (std::uint64_t seed : seeds(20)) {
-                const rbw::GeneratedExercise g = rbw::generateExercise(spec, seed);
-                QVERIFY(g.ok());
-                rbw::World before(*g.scene);
-                while (before.stepIndex() < g.answerStep) QVERIFY(before.step().ok);
-                QSet<int> contacts;
-                for (const rbw::TraceEntry& e : g.key) {
-                    if (e.info->indexKind == rbw::IndexKind::Contact) contacts.insert(e.index);
-                }
-                for (int k : contacts) {
-                    const rbw::ContactInputs in = rbw::checking::contactStepInputs(before, g.answerTrace, k);
-                    const rbw::ContactHeader& c = g.answerTrace.contacts[k];
-                    for (const auto& [body, x] : {std::pair{c.bodyA, in.x_A}, std::pair{c.bodyB, in.x_B}}) {
-                        if (body < 0) continue;
-                        ++sides;
-                        const rbw::Mat3 I0inv = before.massProperties()[body].I0inv_B;
-                        const rbw::Vec3 u = (in.g.p_W - x).cross(in.g.n_W);
-                        const rbw::TraceEntry* r = rbw::checking::traceEntryOf(
-                            g.answerTrace, rbw::checking::AnswerKey{"orientation", body, -1, -1});
-                        const rbw::Quat q = r ? std::get<rbw::Quat>(r->value) : before.states()[body].q_WB;
-                        const bool cube = (I0inv - I0inv(0, 0) * rbw::Mat3::Identity()).norm() <= 1e-12 * I0inv.norm();
-                        const bool noResponse = !g.scene->bodies[body].angularResponse;
-                        const bool aboutU = q.vec().cross(u).norm() <= 1e-9 * (1.0 + q.vec().norm() * u.norm());
-                        const QString where = QString("%1 seed %2 contact %3 body %4").arg(lesson).arg(seed).arg(k).arg(body);
-                        QVERIFY2(cube || noResponse || aboutU, qPrintable(where));
-                        // the consequence: the body-frame and world terms agree
-                        const rbw::Mat3 R = q.toRotationMatrix();
-                        const rbw::Mat3 Iinv_W = R * I0inv * R.transpose();
-                        if (!noResponse) {
-                            RBW_COMPARE_NEAR_STRICT(u.dot(I0inv * u), u.dot(Iinv_W * u), 1e-12 * (1.0 + u.squaredNorm() * I0inv.norm()),
-                                                    where);
-                        }
-                    }
-                }
-            }
+        const rbw::ExerciseSpec spec = lessonSpec("03-two-box-collision");
+        const rbw::GeneratedExercise g = rbw::generateExercise(spec, 1);
+        QVERIFY2(g.ok(), qPrintable(g.errors.join('\n')));
+        QCOMPARE(g.answerStep, 1L);
+        const rbw::BodyDef& B = g.scene->bodies[1];
+        QCOMPARE(B.name, std::string("B"));
+        QCOMPARE(B.mass, 0.5);
+        QCOMPARE(g.scene->bodies[0].mass, 2.0);
+        QCOMPARE(g.scene->restitution, 0.7);
+        std::vector<rbw::Answer> answers = rbw::exerciseAnswers(g);
+        const auto at = [&answers](const char* quantity) {
+            const auto it = std::find_if(answers.begin(), answers.end(),
+                                         [quantity](const rbw::Answer& a) { return a.quantity == quantity && a.contact == 0; });
+            if (it == answers.end()) qFatal("no %s in the key", quantity);
+            return it;
+        };
+        RBW_COMPARE_NEAR_STRICT(at("rotational_a")->value[0], 0.452404, 1e-6);
+        RBW_COMPARE_NEAR_STRICT(at("rotational_b")->value[0], 0.895126, 1e-6);
+        RBW_COMPARE_NEAR_STRICT(at("denominator")->value[0], 3.847530, 1e-6);
+        RBW_COMPARE_NEAR_STRICT(at("impulse")->value[0], 1.325526, 1e-6);
+        rbw::World before(*g.scene);
+        while (before.stepIndex() < g.answerStep) QVERIFY(before.step().ok);
+        // the student who uses I0_B^-1: B's term, the denominator and J as derived above
+        at("rotational_b")->value = {0.660635};
+        at("denominator")->value = {3.613039};
+        at("impulse")->value = {1.411554};
+        const std::vector<rbw::AnswerResult> results = rbw::checkAnswers(before, g.answerTrace, answers);
+        const rbw::AnswerResult& r = results[std::size_t(at("rotational_b") - answers.begin())];
+        QCOMPARE(r.verdict, rbw::Verdict::Wrong);
+        QStringList named;
+        for (const char* id : r.mistakes) named << id;
+        QVERIFY2(named == QStringList{"impulse-body-inverse-inertia"},
+                 qPrintable(named.join(", ") + " / " + QString::fromStdString(r.explanation)));
+        // one mistake, one red: the denominator and J follow from the student's B term
+        for (const char* q : {"denominator", "impulse"}) {
+            QCOMPARE(results[std::size_t(at(q) - answers.begin())].verdict, rbw::Verdict::FollowsFromEarlier);
         }
-        QVERIFY(sides > 100);   // not vacuous
-        // Negative control: lesson 1's box (1 x 0.6 x 0.5, M = 2), 90 degrees about z, u = (1, 0, 0):
-        // I0^-1 = diag(9.836066, 4.8, 4.411765), u.I0^-1 u = 9.836066, but R I0^-1 R^T
-        // swaps x and y: u.(R I0^-1 R^T) u = 4.8.
-        const rbw::SceneLoadResult one = rbw::loadSceneFile(QStringLiteral(RBW_SOURCE_DIR "/lessons/01-one-step/scene.json"));
-        QVERIFY(one.ok());
-        const rbw::World w(*one.scene);
-        const rbw::Mat3 I0inv = w.massProperties()[0].I0inv_B;
-        const rbw::Mat3 R = w.states()[0].q_WB.toRotationMatrix();
-        const rbw::Vec3 u(1, 0, 0);
-        RBW_COMPARE_NEAR_STRICT(u.dot(I0inv * u), 9.836066, 1e-6);
-        RBW_COMPARE_NEAR_STRICT(u.dot(R * I0inv * R.transpose() * u), 4.8, 1e-9);
+        // and the measurement over seeds 1..20 finds it in B's term, the denominator and J
+        const rbw::ExerciseMistakeReport boxes = rbw::measureExerciseMistakes(spec, seeds(20));
+        const rbw::ModelVisibility& m = modelOf(boxes, "impulse-body-inverse-inertia");
+        QCOMPARE(m.shownIn, (QStringList{"rotational_b (A–B)", "denominator (A–B)", "impulse (A–B)"}));
+    }
+
+    // Negative control: exercise 03 with the lesson's unit cube for B (without the rule that
+    // makes it 1.4 x 1 x 0.6): a cube's I0^-1 = k E is R I0^-1 R^T in every frame (and its
+    // corner lies on the line through its centre along n, u_B = (0.5, 0.5, 0.5) x (1, 1, 1) = 0),
+    // and A is a cube as well, so impulse-body-inverse-inertia shows nowhere.
+    void cubesHideBodyInverseInertia()
+    {
+        rbw::ExerciseSpec spec = lessonSpec("03-two-box-collision");
+        ruleFor(spec, "bodies[1].size");   // the rule exists
+        std::erase_if(spec.vary, [](const rbw::ExerciseVary& v) { return v.paths.contains("bodies[1].size"); });
+        const rbw::ExerciseMistakeReport cubes = rbw::measureExerciseMistakes(spec, seeds(20));
+        QVERIFY(cubes.errors.isEmpty());
+        QVERIFY(modelOf(cubes, "impulse-body-inverse-inertia").shownIn.isEmpty());
+        QVERIFY(!modelOf(cubes, "impulse-linear-only").shownIn.isEmpty());   // the measurement still sees the others
     }
 
     // The separating exercise's key (lesson 6's further exercise, seed 1): step 33, the
