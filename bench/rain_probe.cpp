@@ -5,7 +5,7 @@
 //   ./build/bench/rbw_rain_probe [--solver soft-step|sequential-impulses]
 //                                [--integrator NAME] [--boxes N] [--substeps N] [--sleep 0|1]
 //
-// Prints the time per step, the outcome (rain::measure, the same as rbw_bench_rain's
+// Prints the time per step (in all and in each second), the outcome (rain::measure, the same as rbw_bench_rain's
 // table), the deepest overlap every second, and the overlapping pairs at the end by
 // the kind of contact:
 //   level      the lower box's storey, round(y_lower - 0.5) for a box resting on another
@@ -92,6 +92,8 @@ int main(int argc, char** argv)
     rbw::World world(std::move(scene));
     std::vector<rain::FinalBox> before;
     double seconds = 0.0;
+    std::vector<double> perSecond;   // ms per step in each second of the rain
+    double secondStart = 0.0;
     std::printf("%d boxes, %s, %s\ndeepest box-box overlap at the end of each second [cm]:", n, solver.c_str(),
                 integrator.c_str());
     for (int k = 1; k <= rain::kSteps; ++k) {
@@ -104,11 +106,15 @@ int main(int argc, char** argv)
         }
         if (k == rain::kLastSecond) before = ourBoxes(world);
         if (k % 60 == 0) {
+            perSecond.push_back(1000.0 * (seconds - secondStart) / 60.0);
+            secondStart = seconds;
             const std::vector<Pair> pairs = overlappingPairs(ourBoxes(world));
             std::printf(" %.2f", pairs.empty() ? 0.0 : 100.0 * pairs.front().hit.depth);
             std::fflush(stdout);
         }
     }
+    std::printf("\nms per step in each second:");
+    for (const double ms : perSecond) std::printf(" %.2f", ms);
     const std::vector<rain::FinalBox> after = ourBoxes(world);
     const rain::Outcome o = rain::measure(after, before);
     std::printf("\n%.3f ms/step; KE %.3g J, > 0.01 m/s %d, > 0.1 m/s %d, asleep %d, overlap %.2f cm, below ground %.1f mm, "

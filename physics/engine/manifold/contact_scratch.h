@@ -33,8 +33,11 @@ struct ContactScratch {
     // Broad-phase scratch
     AabbTree broadPhase;
     std::vector<Aabb> aabbs;
+    std::vector<char> resting;         // per body: asleep, kept out of the tree
     std::vector<std::pair<int, int>> pairs;
     std::vector<char> pairDone;
+    std::vector<std::pair<int, int>> pairsBefore;   // the pairs before a wake, and which were collided
+    std::vector<char> pairDoneBefore;
 };
 
 } // namespace rbw

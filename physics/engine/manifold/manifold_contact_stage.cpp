@@ -78,6 +78,59 @@ bool ManifoldContactStage::collidePair(StepContext& ctx, int a, int b)
     return true;
 }
 
+bool ManifoldContactStage::findPairs(StepContext& ctx, long& tested)
+{
+    ContactScratch& w = *world_;
+    const int n = static_cast<int>(ctx.states.size());
+    BroadPhaseStats& stats = ctx.scratch.broadPhase;
+    // The caps that keep a step linear in the bodies (work_limits.h); beyond one the
+    // step stops with the limit named.
+    const int movableBodies =
+        static_cast<int>(std::count_if(ctx.movable.begin(), ctx.movable.end(), [](char m) { return m != 0; }));
+    const PairLimits limits = manifoldPairLimits(movableBodies);
+    // Sleeping bodies stay out of the tree (a pair of two is never solved): they are
+    // only tested against it, for an awake body that would wake them.
+    w.resting.resize(static_cast<std::size_t>(n));
+    bool anyResting = false;
+    for (int b = 0; b < n; ++b) {
+        const bool rests = w.settings.sleep && sleepingBody(ctx, b);
+        w.resting[static_cast<std::size_t>(b)] = rests ? 1 : 0;
+        anyResting = anyResting || rests;
+    }
+    w.broadPhase.findPairs(w.aabbs, ctx.movable, w.pairs, stats, limits, anyResting ? &w.resting : nullptr);
+    tested += stats.pairsTested;
+    w.pairDone.assign(w.pairs.size(), 0);
+    if (stats.limitHit == PairLimitHit::None) return true;
+    ctx.status = workLimitStatus(ctx.scene, ctx.k, limits, stats);
+    return false;
+}
+
+// A sleeping body touched by an awake movable one wakes with its island; repeated until
+// no more wake, since a woken body may touch another sleeping one. True if any woke.
+bool ManifoldContactStage::wakeTouched(StepContext& ctx)
+{
+    ContactScratch& w = *world_;
+    bool any = false;
+    bool woke = w.settings.sleep;
+    while (woke) {
+        woke = false;
+        for (std::size_t i = 0; i < w.pairs.size(); ++i) {
+            if (w.pairDone[i]) continue;
+            const auto [a, b] = w.pairs[i];
+            const bool wakesB = awakeMovable(ctx, a) && sleepingBody(ctx, b);
+            const bool wakesA = awakeMovable(ctx, b) && sleepingBody(ctx, a);
+            if (!wakesA && !wakesB) continue;
+            w.pairDone[i] = 1;
+            if (collidePair(ctx, a, b)) {
+                ctx.contacts.sleep.wake(wakesB ? b : a);
+                woke = true;
+                any = true;
+            }
+        }
+    }
+    return any;
+}
+
 void ManifoldContactStage::findManifolds(StepContext& ctx)
 {
     ContactScratch& w = *world_;
@@ -93,38 +146,28 @@ void ManifoldContactStage::findManifolds(StepContext& ctx)
             box.max_W += Vec3::Constant(margin);
             w.aabbs[static_cast<std::size_t>(b)] = box;
         }
-        BroadPhaseStats& stats = ctx.scratch.broadPhase;
-        // The caps that keep a step linear in the bodies (work_limits.h); beyond one the
-        // step stops with the limit named.
-        const int movableBodies = static_cast<int>(
-            std::count_if(ctx.movable.begin(), ctx.movable.end(), [](char m) { return m != 0; }));
-        const PairLimits limits = manifoldPairLimits(movableBodies);
-        w.broadPhase.findPairs(w.aabbs, ctx.movable, w.pairs, stats, limits);
-        if (stats.limitHit != PairLimitHit::None) {
-            ctx.status = workLimitStatus(ctx.scene, ctx.k, limits, stats);
-            return;
-        }
-        record(ctx.trace, q::pairs_tested, -1, double(stats.pairsTested));
-        record(ctx.trace, q::pairs_overlapping, -1, double(stats.pairsOverlapping));
-        w.pairDone.assign(w.pairs.size(), 0);
-        // A sleeping body touched by an awake movable one wakes with its island; repeat
-        // until no more wake, since a woken body may touch another sleeping one.
-        bool woke = w.settings.sleep;
-        while (woke) {
-            woke = false;
-            for (std::size_t i = 0; i < w.pairs.size(); ++i) {
-                if (w.pairDone[i]) continue;
-                const auto [a, b] = w.pairs[i];
-                const bool wakesB = awakeMovable(ctx, a) && sleepingBody(ctx, b);
-                const bool wakesA = awakeMovable(ctx, b) && sleepingBody(ctx, a);
-                if (!wakesA && !wakesB) continue;
-                w.pairDone[i] = 1;
-                if (collidePair(ctx, a, b)) {
-                    ctx.contacts.sleep.wake(wakesB ? b : a);
-                    woke = true;
+        // The pairs with a body awake at the start (sleeping ones stay out of the tree);
+        // the islands they touch wake, and if any did, the pairs again with them awake,
+        // so that a woken island's own contacts are solved in this step too.
+        long tested = 0;
+        if (!findPairs(ctx, tested)) return;
+        if (wakeTouched(ctx)) {
+            w.pairsBefore.swap(w.pairs);
+            w.pairDoneBefore.swap(w.pairDone);
+            if (!findPairs(ctx, tested)) return;
+            // A pair collided before the broad phase ran again is done: both lists are sorted
+            for (std::size_t i = 0, j = 0; i < w.pairs.size() && j < w.pairsBefore.size();) {
+                if (w.pairsBefore[j] < w.pairs[i]) {
+                    ++j;
+                } else {
+                    if (w.pairsBefore[j] == w.pairs[i]) w.pairDone[i] = w.pairDoneBefore[j];
+                    ++i;
                 }
             }
+            wakeTouched(ctx);
         }
+        record(ctx.trace, q::pairs_tested, -1, double(tested));
+        record(ctx.trace, q::pairs_overlapping, -1, double(w.pairs.size()));
         // Every other pair with an awake movable body; pairs of sleeping (or fixed)
         // bodies are left alone, their impulses kept for when they wake.
         for (std::size_t i = 0; i < w.pairs.size(); ++i) {
