@@ -4,6 +4,7 @@
 //
 //   ./build/bench/rbw_rain_probe [--solver soft-step|sequential-impulses]
 //                                [--integrator NAME] [--boxes N] [--substeps N] [--sleep 0|1]
+//                                [--threads 1|2]
 //
 // Prints the time per step (in all and in each second), the outcome (rain::measure, the same as rbw_bench_rain's
 // table), the deepest overlap every second, and the overlapping pairs at the end by
@@ -78,24 +79,28 @@ int main(int argc, char** argv)
     std::string solver = "soft-step";
     int substeps = 0;
     int sleep = -1;
+    int threads = 2;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (std::strcmp(argv[i], "--boxes") == 0) n = std::max(1, std::atoi(argv[i + 1]));
         if (std::strcmp(argv[i], "--integrator") == 0) integrator = argv[i + 1];
         if (std::strcmp(argv[i], "--solver") == 0) solver = argv[i + 1];
         if (std::strcmp(argv[i], "--substeps") == 0) substeps = std::max(1, std::atoi(argv[i + 1]));
         if (std::strcmp(argv[i], "--sleep") == 0) sleep = std::atoi(argv[i + 1]);
+        if (std::strcmp(argv[i], "--threads") == 0) threads = std::clamp(std::atoi(argv[i + 1]), 1, 2);
     }
     rbw::SceneDef scene = rain::rainScene(n, rbw::ContactModel::Manifold, integrator);
     scene.solver = solver == "sequential-impulses" ? rbw::ManifoldSolver::SequentialImpulses : rbw::ManifoldSolver::SoftStep;
     if (substeps > 0) scene.substeps = substeps;
     if (sleep >= 0) scene.sleep = sleep != 0;
-    rbw::World world(std::move(scene));
+    rbw::WorldOptions options;
+    options.contactThreads = threads;
+    rbw::World world(std::move(scene), options);
     std::vector<rain::FinalBox> before;
     double seconds = 0.0;
     std::vector<double> perSecond;   // ms per step in each second of the rain
     double secondStart = 0.0;
-    std::printf("%d boxes, %s, %s\ndeepest box-box overlap at the end of each second [cm]:", n, solver.c_str(),
-                integrator.c_str());
+    std::printf("%d boxes, %s, %s, %d thread(s)\ndeepest box-box overlap at the end of each second [cm]:", n, solver.c_str(),
+                integrator.c_str(), threads);
     for (int k = 1; k <= rain::kSteps; ++k) {
         const auto start = std::chrono::steady_clock::now();
         const rbw::StepStatus& status = world.step(nullptr);

@@ -123,6 +123,8 @@ public:
     }
     // The broad phase's counts in the last step (zero when it did not run).
     const BroadPhaseStats& lastBroadPhaseStats() const { return scratch_.broadPhase; }
+    // The lanes the soft step solved apart in the last step (1 or 2; 0 when it did not run).
+    int lastContactLanes() const { return scratch_.contactLanes; }
 
 private:
     StepContext context(StepTrace* trace);

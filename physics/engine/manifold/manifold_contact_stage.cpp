@@ -8,6 +8,7 @@
 #include "physics/engine/scene_words.h"
 
 #include <algorithm>
+#include <functional>
 
 namespace rbw {
 
@@ -17,6 +18,10 @@ bool awakeMovable(const StepContext& ctx, int b)
 {
     return ctx.movable[static_cast<std::size_t>(b)] && !ctx.contacts.sleep.asleep(b);
 }
+
+// The soft step's points from which two lanes pay for waking the second thread (the
+// rain's 1000 boxes have some 4000; a lesson's few boxes stay on one thread)
+constexpr int kPointsForTwoLanes = 256;
 
 bool sleepingBody(const StepContext& ctx, int b)
 {
@@ -281,8 +286,10 @@ void ManifoldContactStage::solveSoftStep(StepContext& ctx)
     // The soft step starts from v, not from v + h F/M: each substep adds h_s F/M itself.
     // Its loads per body, a = F/M and alpha = I^-1 q (none for a body it does not move).
     w.motion.assign(static_cast<std::size_t>(n + 1), SubstepMotion{});
+    w.moving.assign(static_cast<std::size_t>(n + 1), 0);
     for (int b = 0; b < n; ++b) {
         if (!awakeMovable(ctx, b)) continue;
+        w.moving[static_cast<std::size_t>(b)] = 1;
         SolverBody& sb = w.bodies[static_cast<std::size_t>(b)];
         const BodyState& s = ctx.states[static_cast<std::size_t>(b)];
         const BodyLoad& load = ctx.loads[static_cast<std::size_t>(b)];
@@ -294,13 +301,22 @@ void ManifoldContactStage::solveSoftStep(StepContext& ctx)
     }
     SoftStepSolver& solver = w.softSolver;
     solver.prepare(w.manifolds, w.bodies, n, ctx.states, w.settings, h_s);
-    for (int i = 0; i < substeps; ++i) {
-        SoftStepSolver::integrateVelocities(w.bodies, w.motion, h_s);
-        solver.warmStart(w.bodies);
-        solver.solve(w.bodies, w.motion);
-        SoftStepSolver::integratePositions(w.bodies, w.motion, h_s);
-        solver.relax(w.bodies, w.motion);
-        if (ctx.trace != nullptr) solver.recordSubstep();
+    // Two lanes of whole islands on two threads when the step is worth it (not with a
+    // trace, which records every point after each substep); the same bits either way.
+    const bool twoLanes = w.threads >= 2 && ctx.trace == nullptr && solver.pointCount() >= kPointsForTwoLanes;
+    solver.splitLanes(w.bodies, w.moving, twoLanes ? 2 : 1);
+    if (solver.laneCount() == 2 && !solver.lane(0).constraints.empty() && !solver.lane(1).constraints.empty()) {
+        const std::function<void(int)> lane = [&w, &solver, substeps, h_s](int l) {
+            for (int i = 0; i < substeps; ++i) solver.substep(w.bodies, w.motion, h_s, l);
+        };
+        w.worker.run(lane);
+        ctx.scratch.contactLanes = 2;
+    } else {
+        ctx.scratch.contactLanes = 1;
+        for (int i = 0; i < substeps; ++i) {
+            for (int l = 0; l < solver.laneCount(); ++l) solver.substep(w.bodies, w.motion, h_s, l);
+            if (ctx.trace != nullptr) solver.recordSubstep();
+        }
     }
     solver.applyRestitution(w.bodies, ctx.scene.restitutionThreshold);
     // What the integration gets: the step's impulses as loads (below); the loads it

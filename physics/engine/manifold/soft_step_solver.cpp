@@ -121,19 +121,53 @@ void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector
     }
 }
 
-void SoftStepSolver::integrateVelocities(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion,
-                                         double h_s)
+void SoftStepSolver::splitLanes(std::vector<SolverBody>& bodies, const std::vector<char>& moving, int lanes)
 {
-    for (std::size_t b = 0; b < motion.size() && b < bodies.size(); ++b) {
+    ends_.clear();
+    weights_.clear();
+    for (const Constraint& c : constraints_) {
+        ends_.push_back({c.a, c.b});
+        weights_.push_back(c.count);
+    }
+    splitIntoLanes(ends_, weights_, moving, lanes, lanes_, islandScratch_);
+    // Each lane's own static body (all zero, as every static solver body is)
+    const int count = static_cast<int>(bodies.size());
+    bodies.resize(static_cast<std::size_t>(count + laneCount()), SolverBody{});
+    const auto moves = [&moving](int b) { return b < static_cast<int>(moving.size()) && moving[static_cast<std::size_t>(b)]; };
+    for (int l = 0; l < laneCount(); ++l) {
+        for (const int i : lanes_[static_cast<std::size_t>(l)].constraints) {
+            Constraint& c = constraints_[static_cast<std::size_t>(i)];
+            if (!moves(c.a)) c.a = count + l;
+            if (!moves(c.b)) c.b = count + l;
+        }
+    }
+}
+
+void SoftStepSolver::substep(std::vector<SolverBody>& bodies, std::vector<SubstepMotion>& motion, double h_s, int l)
+{
+    const SolverLane& lane = lanes_[static_cast<std::size_t>(l)];
+    integrateVelocities(bodies, motion, h_s, lane);
+    warmStart(bodies, lane);
+    solve(bodies, motion, lane);
+    integratePositions(bodies, motion, h_s, lane);
+    relax(bodies, motion, lane);
+}
+
+void SoftStepSolver::integrateVelocities(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion,
+                                         double h_s, const SolverLane& lane)
+{
+    for (const int i : lane.bodies) {
+        const std::size_t b = static_cast<std::size_t>(i);
         // v += h_s F / M, omega += h_s I^-1 q
         bodies[b].v_W += h_s * motion[b].a_W;
         bodies[b].omega_W += h_s * motion[b].alpha_W;
     }
 }
 
-void SoftStepSolver::warmStart(std::vector<SolverBody>& bodies)
+void SoftStepSolver::warmStart(std::vector<SolverBody>& bodies, const SolverLane& lane)
 {
-    for (const Constraint& c : constraints_) {
+    for (const int i : lane.constraints) {
+        const Constraint& c = constraints_[static_cast<std::size_t>(i)];
         SolverBody& A = bodies[static_cast<std::size_t>(c.a)];
         SolverBody& B = bodies[static_cast<std::size_t>(c.b)];
         for (int k = 0; k < c.count; ++k) {
@@ -152,11 +186,13 @@ void SoftStepSolver::warmStart(std::vector<SolverBody>& bodies)
     }
 }
 
-void SoftStepSolver::solveRows(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, bool useBias)
+void SoftStepSolver::solveRows(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, bool useBias,
+                               const SolverLane& lane)
 {
     const double inv_h = 1.0 / h_s_;
     const SubstepMotion still;   // a plane, a fixed or a sleeping body: never moved
-    for (const Constraint& c : constraints_) {
+    for (const int i : lane.constraints) {
+        const Constraint& c = constraints_[static_cast<std::size_t>(i)];
         SolverBody& A = bodies[static_cast<std::size_t>(c.a)];
         SolverBody& B = bodies[static_cast<std::size_t>(c.b)];
         const SubstepMotion& mA = c.a < static_cast<int>(motion.size()) ? motion[static_cast<std::size_t>(c.a)] : still;
@@ -230,9 +266,10 @@ void SoftStepSolver::solveRows(std::vector<SolverBody>& bodies, const std::vecto
 }
 
 void SoftStepSolver::integratePositions(const std::vector<SolverBody>& bodies, std::vector<SubstepMotion>& motion,
-                                        double h_s)
+                                        double h_s, const SolverLane& lane)
 {
-    for (std::size_t b = 0; b < motion.size() && b < bodies.size(); ++b) {
+    for (const int i : lane.bodies) {
+        const std::size_t b = static_cast<std::size_t>(i);
         SubstepMotion& m = motion[b];
         // dx += h_s v, dtheta += h_s omega
         m.dx_W += h_s * bodies[b].v_W;

@@ -5,7 +5,8 @@
 //
 //   prepare()                     once: anchors, base separations, effective masses,
 //                                 softness, start normal velocities, warm-start impulses
-//   for each substep:
+//   splitLanes()                  once: lanes of whole islands, one per thread (solver_islands.h)
+//   for each substep, each lane (substep()):
 //     integrateVelocities()       v += h_s F / M,  omega += h_s I^-1 q
 //     warmStart()                 the accumulated impulses applied again
 //     solve()                     soft normal rows with a push-out bias (useBias = true)
@@ -52,6 +53,7 @@
 #include "physics/engine/manifold/contact_solver.h"
 #include "physics/engine/manifold/manifold.h"
 #include "physics/engine/manifold/settings.h"
+#include "physics/engine/manifold/solver_islands.h"
 
 #include <vector>
 
@@ -96,17 +98,36 @@ public:
     void prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies, int planeBody,
                  const std::vector<BodyState>& start, const ManifoldSettings& settings, double h_s);
 
-    // v += h_s F / M, omega += h_s I^-1 q for every body with motion (the plane's has none).
+    // Splits the constraints into `lanes` lanes that share no moving body
+    // (solver_islands.h) and gives each lane its own static body: a constraint's fixed,
+    // sleeping or plane side becomes bodies[count + lane] (appended; zero velocity,
+    // mass and inertia, as the body it stands for), so that no two lanes write to one
+    // body. With one lane: every constraint in order, every moving body.
+    void splitLanes(std::vector<SolverBody>& bodies, const std::vector<char>& moving, int lanes);
+    int laneCount() const { return static_cast<int>(lanes_.size()); }
+    const SolverLane& lane(int l) const { return lanes_[static_cast<std::size_t>(l)]; }
+
+    // One substep of one lane: integrateVelocities, warmStart, solve, integratePositions, relax.
+    void substep(std::vector<SolverBody>& bodies, std::vector<SubstepMotion>& motion, double h_s, int lane);
+
+    // v += h_s F / M, omega += h_s I^-1 q for the lane's bodies.
     static void integrateVelocities(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion,
-                                    double h_s);
+                                    double h_s, const SolverLane& lane);
     // Applies the accumulated impulses to the bodies (and counts them into the step's P).
-    void warmStart(std::vector<SolverBody>& bodies);
+    void warmStart(std::vector<SolverBody>& bodies, const SolverLane& lane);
     // The soft rows with the push-out bias.
-    void solve(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion) { solveRows(bodies, motion, true); }
+    void solve(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, const SolverLane& lane)
+    {
+        solveRows(bodies, motion, true, lane);
+    }
     // dx += h_s v, dtheta += h_s omega, dq <- normalise(dq + h_s/2 (0, omega) dq).
-    static void integratePositions(const std::vector<SolverBody>& bodies, std::vector<SubstepMotion>& motion, double h_s);
+    static void integratePositions(const std::vector<SolverBody>& bodies, std::vector<SubstepMotion>& motion,
+                                   double h_s, const SolverLane& lane);
     // The rigid rows without the bias: takes back the push-out velocity.
-    void relax(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion) { solveRows(bodies, motion, false); }
+    void relax(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, const SolverLane& lane)
+    {
+        solveRows(bodies, motion, false, lane);
+    }
     // After the substeps: the bounce v_n -> -e v_n0 at points approaching faster than
     // `threshold` at the start that got an impulse.
     void applyRestitution(std::vector<SolverBody>& bodies, double threshold);
@@ -124,7 +145,8 @@ public:
     const Softness& staticSoftness() const { return static_; }
 
 private:
-    void solveRows(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, bool useBias);
+    void solveRows(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, bool useBias,
+                   const SolverLane& lane);
 
     struct Point {
         Vec3 r_A_W, r_B_W;
@@ -142,7 +164,7 @@ private:
     struct Constraint {
         Vec3 n_W, t1_W, t2_W;
         double mu, restitution;
-        int a, b;
+        int a, b;   // solver bodies; a static side may be its lane's (splitLanes)
         int first, count;
         double invM_A, invM_B;   // [1/kg]
         Softness softness;
@@ -150,6 +172,10 @@ private:
     std::vector<Constraint> constraints_;
     std::vector<Point> points_;
     std::vector<PointImpulses> history_;
+    std::vector<SolverLane> lanes_;
+    IslandScratch islandScratch_;
+    std::vector<std::array<int, 2>> ends_;   // splitLanes' input: each constraint's bodies
+    std::vector<int> weights_;               // and points
     Softness contact_;
     Softness static_;
     double h_s_ = 0.0;
