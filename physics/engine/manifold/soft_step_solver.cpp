@@ -198,12 +198,16 @@ void SoftStepSolver::solveRows(std::vector<SolverBody>& bodies, const std::vecto
         const SubstepMotion& mA = c.a < static_cast<int>(motion.size()) ? motion[static_cast<std::size_t>(c.a)] : still;
         const SubstepMotion& mB = c.b < static_cast<int>(motion.size()) ? motion[static_cast<std::size_t>(c.b)] : still;
         // dx_A - dx_B, the bodies' relative displacement since prepare()
-        const Vec3 dx_W = mA.dx_W - mB.dx_W;
+        // s = s_base + n . (dx_A - dx_B + dq_A r_A - dq_B r_B)
+        //   = s_base + n . (dx_A - dx_B) + (dq_A^-1 n) . r_A - (dq_B^-1 n) . r_B
+        // (a rotation keeps dot products): the normal turned back once per manifold,
+        // not each lever arm turned forward at every point
+        const double ndx = c.n_W.dot(mA.dx_W - mB.dx_W);
+        const Vec3 nA_W = mA.dq_WB.conjugate() * c.n_W;
+        const Vec3 nB_W = mB.dq_WB.conjugate() * c.n_W;
         for (int k = 0; k < c.count; ++k) {
             Point& p = points_[static_cast<std::size_t>(c.first + k)];
-            // s = s_base + n . (dx_A - dx_B + dq_A r_A - dq_B r_B)
-            const Vec3 ds_W = dx_W + (mA.dq_WB * p.r_A_W - mB.dq_WB * p.r_B_W);
-            const double s = p.s_base + c.n_W.dot(ds_W);
+            const double s = p.s_base + (ndx + (nA_W.dot(p.r_A_W) - nB_W.dot(p.r_B_W)));
             double bias = 0.0;
             double massScale = 1.0;
             double impulseScale = 0.0;
