@@ -48,11 +48,13 @@ using rain::FinalBox;
 using rain::RainBox;
 
 // Our solvers: one line each. The manifold model's solver settings go into the scene
-// through `configure` (nullptr: the defaults).
+// through `configure` (nullptr: the defaults); `threads`: WorldOptions::contactThreads
+// (the soft step's islands on two threads; Bullet and Rapier's WebAssembly port run on one).
 struct OurSolver {
     const char* name;
     const char* integrator;
     void (*configure)(rbw::SceneDef&);
+    int threads = 2;
 };
 constexpr OurSolver kOurSolvers[] = {
     {"rbw sequential impulses, symplectic Euler", "symplectic-euler",
@@ -62,6 +64,8 @@ constexpr OurSolver kOurSolvers[] = {
     {"rbw soft step, symplectic Euler", "symplectic-euler",
      [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SoftStep; }},
     {"rbw soft step, explicit Euler", "explicit-euler", [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SoftStep; }},
+    {"rbw soft step, symplectic Euler, 1 thread", "symplectic-euler",
+     [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SoftStep; }, 1},
 };
 
 // What one run of one engine gives: ms per step, the boxes one second before the end and
@@ -108,7 +112,9 @@ Run runOurs(const OurSolver& solver, int n)
 {
     rbw::SceneDef scene = rain::rainScene(n, rbw::ContactModel::Manifold, solver.integrator);
     if (solver.configure != nullptr) solver.configure(scene);
-    rbw::World world(std::move(scene));
+    rbw::WorldOptions options;
+    options.contactThreads = solver.threads;
+    rbw::World world(std::move(scene), options);
     Run r;
     double seconds = 0.0;
     for (int k = 1; k <= rain::kSteps; ++k) {

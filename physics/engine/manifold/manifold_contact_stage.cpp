@@ -23,6 +23,13 @@ bool awakeMovable(const StepContext& ctx, int b)
 // rain's 1000 boxes have some 4000; a lesson's few boxes stay on one thread)
 constexpr int kPointsForTwoLanes = 256;
 
+int pointCount(const std::vector<Manifold>& manifolds)
+{
+    int points = 0;
+    for (const Manifold& m : manifolds) points += m.count;
+    return points;
+}
+
 bool sleepingBody(const StepContext& ctx, int b)
 {
     return ctx.movable[static_cast<std::size_t>(b)] && ctx.contacts.sleep.asleep(b);
@@ -300,28 +307,34 @@ void ManifoldContactStage::solveSoftStep(StepContext& ctx)
         sb.omega_W = s.omega_W;
     }
     SoftStepSolver& solver = w.softSolver;
-    solver.prepare(w.manifolds, w.bodies, n, ctx.states, w.settings, h_s);
     // Two lanes of whole islands on two threads when the step is worth it (not with a
     // trace, which records every point after each substep); the same bits either way.
-    const bool twoLanes = w.threads >= 2 && ctx.trace == nullptr && solver.pointCount() >= kPointsForTwoLanes;
-    solver.splitLanes(w.bodies, w.moving, twoLanes ? 2 : 1);
+    const bool twoLanes = w.threads >= 2 && ctx.trace == nullptr && pointCount(w.manifolds) >= kPointsForTwoLanes;
+    solver.begin(w.manifolds, w.bodies, n, w.moving, w.settings, h_s, twoLanes ? 2 : 1);
+    const double threshold = ctx.scene.restitutionThreshold;
+    // What the integration gets: the step's impulses as loads (store(), then below); the
+    // loads it spent in the substeps are the same F and q, so v_{n+1} = v + h (F + P/h) / M.
     if (solver.laneCount() == 2 && !solver.lane(0).constraints.empty() && !solver.lane(1).constraints.empty()) {
-        const std::function<void(int)> lane = [&w, &solver, substeps, h_s](int l) {
+        const std::function<void(int)> lane = [&w, &solver, &ctx, substeps, h_s, threshold](int l) {
+            solver.prepare(w.manifolds, w.bodies, ctx.states, l);
             for (int i = 0; i < substeps; ++i) solver.substep(w.bodies, w.motion, h_s, l);
+            solver.applyRestitution(w.bodies, threshold, l);
+            solver.store(w.manifolds, w.bodies, l);
         };
         w.worker.run(lane);
         ctx.scratch.contactLanes = 2;
     } else {
         ctx.scratch.contactLanes = 1;
+        for (int l = 0; l < solver.laneCount(); ++l) solver.prepare(w.manifolds, w.bodies, ctx.states, l);
         for (int i = 0; i < substeps; ++i) {
             for (int l = 0; l < solver.laneCount(); ++l) solver.substep(w.bodies, w.motion, h_s, l);
             if (ctx.trace != nullptr) solver.recordSubstep();
         }
+        for (int l = 0; l < solver.laneCount(); ++l) {
+            solver.applyRestitution(w.bodies, threshold, l);
+            solver.store(w.manifolds, w.bodies, l);
+        }
     }
-    solver.applyRestitution(w.bodies, ctx.scene.restitutionThreshold);
-    // What the integration gets: the step's impulses as loads (below); the loads it
-    // spent in the substeps are the same F and q, so v_{n+1} = v + h (F + P/h) / M.
-    solver.store(w.manifolds, w.bodies);
     w.iterationsUsed = substeps;
     record(ctx.trace, q::soft_substep, -1, h_s);
     record(ctx.trace, q::soft_contact_hertz, -1, softContactHertz(w.settings.contactHertzPerSubstepRate, h_s));

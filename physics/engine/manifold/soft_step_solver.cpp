@@ -56,11 +56,9 @@ double softContactHertz(double hertzPerSubstepRate, double h_s)
     return hertzPerSubstepRate / h_s;
 }
 
-void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies, int planeBody,
-                             const std::vector<BodyState>& start, const ManifoldSettings& settings, double h_s)
+void SoftStepSolver::begin(const std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies, int planeBody,
+                           const std::vector<char>& moving, const ManifoldSettings& settings, double h_s, int lanes)
 {
-    constraints_.clear();
-    points_.clear();
     history_.clear();
     h_s_ = h_s;
     maxPushOut_ = settings.maxPushOut;
@@ -68,21 +66,62 @@ void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector
     const double f = softContactHertz(settings.contactHertzPerSubstepRate, h_s);
     contact_ = makeSoft(f, settings.contactDampingRatio, h_s);
     static_ = makeSoft(2.0 * f, settings.contactDampingRatio, h_s);
-    for (Manifold& m : manifolds) {
-        const int bIndex = m.b >= 0 ? m.b : planeBody;
-        const SolverBody& A = bodies[static_cast<std::size_t>(m.a)];
-        const SolverBody& B = bodies[static_cast<std::size_t>(bIndex)];
+    // Each manifold's bodies and its points' place, in order
+    constraints_.resize(manifolds.size());
+    ends_.clear();
+    weights_.clear();
+    int first = 0;
+    for (std::size_t i = 0; i < manifolds.size(); ++i) {
+        const Manifold& m = manifolds[i];
+        Constraint& c = constraints_[i];
+        c.a = m.a;
+        c.b = m.b >= 0 ? m.b : planeBody;
+        c.first = first;
+        c.count = m.count;
+        first += m.count;
+        ends_.push_back({c.a, c.b});
+        weights_.push_back(m.count);
+    }
+    points_.resize(static_cast<std::size_t>(first));
+    splitIntoLanes(ends_, weights_, moving, lanes, lanes_, islandScratch_);
+    // Each lane's own static body (all zero, as every static solver body is)
+    const int count = static_cast<int>(bodies.size());
+    bodies.resize(static_cast<std::size_t>(count + laneCount()), SolverBody{});
+    const auto moves = [&moving](int b) { return b < static_cast<int>(moving.size()) && moving[static_cast<std::size_t>(b)]; };
+    for (int l = 0; l < laneCount(); ++l) {
+        for (const int i : lanes_[static_cast<std::size_t>(l)].constraints) {
+            Constraint& c = constraints_[static_cast<std::size_t>(i)];
+            if (!moves(c.a)) c.a = count + l;
+            if (!moves(c.b)) c.b = count + l;
+        }
+    }
+}
+
+void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies,
+                             const std::vector<BodyState>& start, int lane)
+{
+    for (const int i : lanes_[static_cast<std::size_t>(lane)].constraints) {
+        Manifold& m = manifolds[static_cast<std::size_t>(i)];
+        Constraint& c = constraints_[static_cast<std::size_t>(i)];
+        const SolverBody& A = bodies[static_cast<std::size_t>(c.a)];
+        const SolverBody& B = bodies[static_cast<std::size_t>(c.b)];
         const BodyState& startA = start[static_cast<std::size_t>(m.a)];
         const BodyState* startB = m.b >= 0 ? &start[static_cast<std::size_t>(m.b)] : nullptr;
         const Vec3 xB_W = startB != nullptr ? startB->x_W : Vec3::Zero();
         const bool movesB = B.invM > 0.0 || !B.Iinv_W.isZero(0.0);
-        constraints_.push_back(Constraint{m.n_W, m.t1_W, m.t2_W, m.mu, m.restitution, m.a, bIndex,
-                                          static_cast<int>(points_.size()), m.count, A.invM, B.invM,
-                                          movesB ? contact_ : static_});
+        c.n_W = m.n_W;
+        c.t1_W = m.t1_W;
+        c.t2_W = m.t2_W;
+        c.mu = m.mu;
+        c.restitution = m.restitution;
+        c.invM_A = A.invM;
+        c.invM_B = B.invM;
+        c.softness = movesB ? contact_ : static_;
         const double invMAB = A.invM + B.invM;
         for (int k = 0; k < m.count; ++k) {
             ManifoldPoint& mp = m.points[static_cast<std::size_t>(k)];
-            Point p{};
+            Point& p = points_[static_cast<std::size_t>(c.first + k)];
+            p = Point{};
             // r_A = p - x_A, r_B = p - x_B (fixed for the step, Box2D's anchors)
             p.r_A_W = mp.p_W - startA.x_W;
             p.r_B_W = mp.p_W - xB_W;
@@ -116,29 +155,6 @@ void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector
             mp.m_t2 = p.m_t2;
             mp.normalVelocity = p.v_n0;
             mp.v_target = 0.0;
-            points_.push_back(p);
-        }
-    }
-}
-
-void SoftStepSolver::splitLanes(std::vector<SolverBody>& bodies, const std::vector<char>& moving, int lanes)
-{
-    ends_.clear();
-    weights_.clear();
-    for (const Constraint& c : constraints_) {
-        ends_.push_back({c.a, c.b});
-        weights_.push_back(c.count);
-    }
-    splitIntoLanes(ends_, weights_, moving, lanes, lanes_, islandScratch_);
-    // Each lane's own static body (all zero, as every static solver body is)
-    const int count = static_cast<int>(bodies.size());
-    bodies.resize(static_cast<std::size_t>(count + laneCount()), SolverBody{});
-    const auto moves = [&moving](int b) { return b < static_cast<int>(moving.size()) && moving[static_cast<std::size_t>(b)]; };
-    for (int l = 0; l < laneCount(); ++l) {
-        for (const int i : lanes_[static_cast<std::size_t>(l)].constraints) {
-            Constraint& c = constraints_[static_cast<std::size_t>(i)];
-            if (!moves(c.a)) c.a = count + l;
-            if (!moves(c.b)) c.b = count + l;
         }
     }
 }
@@ -286,9 +302,10 @@ void SoftStepSolver::integratePositions(const std::vector<SolverBody>& bodies, s
     }
 }
 
-void SoftStepSolver::applyRestitution(std::vector<SolverBody>& bodies, double threshold)
+void SoftStepSolver::applyRestitution(std::vector<SolverBody>& bodies, double threshold, int lane)
 {
-    for (const Constraint& c : constraints_) {
+    for (const int i : lanes_[static_cast<std::size_t>(lane)].constraints) {
+        const Constraint& c = constraints_[static_cast<std::size_t>(i)];
         if (c.restitution == 0.0) continue;
         SolverBody& A = bodies[static_cast<std::size_t>(c.a)];
         SolverBody& B = bodies[static_cast<std::size_t>(c.b)];
@@ -313,9 +330,10 @@ void SoftStepSolver::recordSubstep()
     for (const Point& p : points_) history_.push_back(PointImpulses{p.lambda_n, p.lambda_t1, p.lambda_t2});
 }
 
-void SoftStepSolver::store(std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies) const
+void SoftStepSolver::store(std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies, int lane) const
 {
-    for (std::size_t i = 0; i < constraints_.size() && i < manifolds.size(); ++i) {
+    for (const int index : lanes_[static_cast<std::size_t>(lane)].constraints) {
+        const std::size_t i = static_cast<std::size_t>(index);
         const Constraint& c = constraints_[i];
         SolverBody& A = bodies[static_cast<std::size_t>(c.a)];
         SolverBody& B = bodies[static_cast<std::size_t>(c.b)];
