@@ -347,10 +347,7 @@ void SoftStepSolver::store(std::vector<Manifold>& manifolds, std::vector<SolverB
             // The step's impulse P = P_n n + P_t1 t1 + P_t2 t2 on A, -P on B; moments r x P
             const Vec3 P_W = p.P_n * c.n_W + p.P_t1 * c.t1_W + p.P_t2 * c.t2_W;
             mp.P_t_W = p.P_t1 * c.t1_W + p.P_t2 * c.t2_W;
-            A.P_W += P_W;
-            A.Lc_W += p.r_A_W.cross(P_W);
-            B.P_W -= P_W;
-            B.Lc_W -= p.r_B_W.cross(P_W);
+            addContactImpulse(A, B, p.r_A_W, p.r_B_W, P_W);
         }
     }
 }
