@@ -29,16 +29,7 @@
 
 namespace {
 
-std::vector<rain::FinalBox> ourBoxes(const rbw::World& world)
-{
-    std::vector<rain::FinalBox> boxes;
-    for (int b = 0; b < static_cast<int>(world.states().size()); ++b) {
-        const rbw::BodyState& s = world.states()[static_cast<std::size_t>(b)];
-        boxes.push_back(rain::FinalBox{rbw::BoxPose{s.x_W, s.R_WB, rbw::Vec3::Constant(0.5)}, s.v_W, s.omega_W,
-                                       world.contactState().sleep.asleep(b)});
-    }
-    return boxes;
-}
+using rain::ourBoxes;
 
 // The angle between a box's axis nearest to world y and world y [deg]
 double tiltDegrees(const rbw::BoxPose& pose)
