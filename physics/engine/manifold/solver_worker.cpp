@@ -3,6 +3,14 @@
 
 namespace rbw {
 
+namespace {
+
+constexpr std::int64_t kOpen = 0;
+constexpr std::int64_t kJoined = 1;
+constexpr std::int64_t kClosed = 2;
+
+} // namespace
+
 SolverWorker::~SolverWorker()
 {
     if (!thread_.joinable()) return;
@@ -14,34 +22,51 @@ SolverWorker::~SolverWorker()
     thread_.join();
 }
 
-void SolverWorker::run(const std::function<void(int)>& task)
+void SolverWorker::work(int count, const std::function<void(int)>& task)
 {
+    for (int lane = next_.fetch_add(1); lane < count; lane = next_.fetch_add(1)) task(lane);
+}
+
+void SolverWorker::run(int count, const std::function<void(int)>& task)
+{
+    if (count <= 0) return;
     if (!thread_.joinable()) thread_ = std::thread(&SolverWorker::loop, this);
+    std::int64_t step = 0;
     {
         const std::lock_guard<std::mutex> lock(mutex_);
+        step = ++issued_;
         task_ = &task;
-        ++issued_;
+        count_ = count;
+        next_.store(0);
+        part_.store(4 * step + kOpen);
     }
     wake_.notify_one();
-    task(0);
+    work(count, task);
+    // Every lane is claimed. A worker that has not joined this step never will.
+    std::int64_t open = 4 * step + kOpen;
+    if (part_.compare_exchange_strong(open, 4 * step + kClosed)) return;
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [this] { return finished_ == issued_; });
-    task_ = nullptr;
+    done_.wait(lock, [this, step] { return finished_ == step; });
 }
 
 void SolverWorker::loop()
 {
-    long seen = 0;
+    std::int64_t seen = 0;
     for (;;) {
         const std::function<void(int)>* task = nullptr;
+        int count = 0;
         {
             std::unique_lock<std::mutex> lock(mutex_);
             wake_.wait(lock, [this, seen] { return stop_ || issued_ != seen; });
             if (stop_) return;
             seen = issued_;
             task = task_;
+            count = count_;
         }
-        (*task)(1);
+        // Join the step unless the caller has closed it (or moved on to the next one)
+        std::int64_t open = 4 * seen + kOpen;
+        if (!part_.compare_exchange_strong(open, 4 * seen + kJoined)) continue;
+        work(count, *task);
         {
             const std::lock_guard<std::mutex> lock(mutex_);
             finished_ = seen;

@@ -89,8 +89,8 @@ private slots:
 
     // The rain of 100 boxes (the soft step, sleeping on) for 150 steps, through landing
     // (about step 43) and settling: one thread and two give the same bits in every step.
-    // Control: the two-thread world did solve in two lanes in the steps with 256 points
-    // or more, from the landing until the boxes sleep (38 of the 150 steps when written),
+    // Control: the two-thread world did share its lanes between two threads in the steps
+    // with 256 points or more, from the landing until the boxes sleep (38 of the 150 steps when written),
     // and the one-thread world never did.
     void twoThreadsSameBits()
     {
@@ -108,7 +108,7 @@ private slots:
             QVERIFY(parallel.step().ok);
             QVERIFY2(sameStates(serial.states(), parallel.states()), qPrintable(QStringLiteral("step %1").arg(k)));
             QVERIFY(serial.lastContactLanes() <= 1);
-            if (parallel.lastContactLanes() == 2) ++twoLaneSteps;
+            if (parallel.lastContactLanes() > 1) ++twoLaneSteps;
         }
         QVERIFY2(twoLaneSteps >= 10, qPrintable(QString::number(twoLaneSteps)));
     }
