@@ -21,13 +21,13 @@ bool awakeMovable(const StepContext& ctx, int b)
 
 // The soft step's points from which lanes pay for waking the second thread (the
 // rain's 1000 boxes have some 4000; a lesson's few boxes stay on one thread), and the
-// lanes then: one per thread. The caller claims the first, the worker the second; if
-// the worker starts late (its core busy), the caller takes that one too. More lanes
-// than threads cost more than they balance: a lane's rows (about 1 MB in the rain) then
-// change core from step to step (8 lanes: 1.55 against 1.11 ms/step, 1.37 against 0.96
-// s of CPU for the rain).
+// lanes then: the caller runs the first half, the worker the second (the same lanes on
+// the same core from step to step: lanes handed out to whoever is free change core and
+// were slower, 1.55 against 1.11 ms/step), and each takes over what the other has not
+// started (solver_worker.h), so a worker slowed by another process on its core holds
+// back at most one lane.
 constexpr int kPointsForTwoLanes = 256;
-constexpr int kLanes = 2;
+constexpr int kLanes = 8;
 
 int pointCount(const std::vector<Manifold>& manifolds)
 {

@@ -22,9 +22,19 @@ SolverWorker::~SolverWorker()
     thread_.join();
 }
 
-void SolverWorker::work(int count, const std::function<void(int)>& task)
+void SolverWorker::work(bool caller, std::int64_t step, int count, const std::function<void(int)>& task)
 {
-    for (int lane = next_.fetch_add(1); lane < count; lane = next_.fetch_add(1)) task(lane);
+    const int half = (count + 1) / 2;
+    const int first = caller ? 0 : half;
+    const int end = caller ? half : count;
+    for (int lane = first; lane < end; ++lane) {
+        if (claim(lane, step)) task(lane);
+    }
+    const int otherFirst = caller ? half : 0;
+    const int otherEnd = caller ? count : half;
+    for (int lane = otherEnd - 1; lane >= otherFirst; --lane) {
+        if (claim(lane, step)) task(lane);
+    }
 }
 
 void SolverWorker::run(int count, const std::function<void(int)>& task)
@@ -37,11 +47,10 @@ void SolverWorker::run(int count, const std::function<void(int)>& task)
         step = ++issued_;
         task_ = &task;
         count_ = count;
-        next_.store(0);
         part_.store(4 * step + kOpen);
     }
     wake_.notify_one();
-    work(count, task);
+    work(true, step, count, task);
     // Every lane is claimed. A worker that has not joined this step never will.
     std::int64_t open = 4 * step + kOpen;
     if (part_.compare_exchange_strong(open, 4 * step + kClosed)) return;
@@ -66,7 +75,7 @@ void SolverWorker::loop()
         // Join the step unless the caller has closed it (or moved on to the next one)
         std::int64_t open = 4 * seen + kOpen;
         if (!part_.compare_exchange_strong(open, 4 * seen + kJoined)) continue;
-        work(count, *task);
+        work(false, seen, count, *task);
         {
             const std::lock_guard<std::mutex> lock(mutex_);
             finished_ = seen;
