@@ -13,7 +13,7 @@
 //   overlap   the deepest box-box overlap: the smallest SAT overlap of each
 //             overlapping pair (course/box_box_sat.h), the largest of those      [m]
 //   below     how far the lowest box corner is below the ground                 [m]
-// The scene and the outcome: rain_scene.h (shared with bench_rain.cpp, which also times
+// The scene and the outcome: rain_scene.h, Bullet's world: rain_bullet.h (shared with bench_rain.cpp, which also times
 // Rapier and reports sleeping, mean height and drift).
 // Results and machine: docs/performance.md, "Contacts: the box rain".
 // Run: ./build/bench/rbw_bench_contact   (about a minute)
@@ -23,7 +23,7 @@
 #include <benchmark/benchmark.h>
 
 #ifdef RBW_HAVE_BULLET
-#include <btBulletDynamicsCommon.h>
+#include "bench/rain_bullet.h"
 #endif
 
 #include <algorithm>
@@ -67,17 +67,17 @@ void BM_RainOurs(benchmark::State& state, rbw::ContactModel model)
     const int n = static_cast<int>(state.range(0));
     for (auto _ : state) {
         state.PauseTiming();
-        rbw::World world(rainScene(n, model));
+        // One thread: the time is the calling thread's CPU time (threadSeconds), which
+        // would not count a second thread's work (bench_rain.cpp times the wall clock)
+        rbw::WorldOptions oneThread;
+        oneThread.contactThreads = 1;
+        rbw::World world(rainScene(n, model), oneThread);
         state.ResumeTiming();
         const double start = threadSeconds();
         for (int k = 0; k < kSteps; ++k) world.step(nullptr);
         const double seconds = threadSeconds() - start;
         state.PauseTiming();
-        std::vector<FinalBox> boxes;
-        for (int b = 0; b < n; ++b) {
-            const rbw::BodyState& s = world.states()[static_cast<std::size_t>(b)];
-            boxes.push_back(FinalBox{rbw::BoxPose{s.x_W, s.R_WB, rbw::Vec3::Constant(0.5)}, s.v_W, s.omega_W});
-        }
+        const std::vector<FinalBox> boxes = rain::ourBoxes(world);
         report(state, seconds, measure(boxes));
         state.ResumeTiming();
     }
@@ -89,53 +89,14 @@ void BM_RainBullet(benchmark::State& state)
     const int n = static_cast<int>(state.range(0));
     for (auto _ : state) {
         state.PauseTiming();
-        btDefaultCollisionConfiguration config;
-        btCollisionDispatcher dispatcher(&config);
-        btDbvtBroadphase broadphase;
-        btSequentialImpulseConstraintSolver solver;
-        btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
-        world.setGravity(btVector3(0.0, -9.81, 0.0));
-        const btScalar friction = std::sqrt(0.5);
-        btStaticPlaneShape groundShape(btVector3(0, 1, 0), 0);
-        btRigidBody ground(0.0, nullptr, &groundShape);
-        ground.setFriction(friction);
-        ground.setRestitution(0.0);
-        world.addRigidBody(&ground);
-        btBoxShape boxShape(btVector3(0.5, 0.5, 0.5));
-        btVector3 inertia(0, 0, 0);
-        boxShape.calculateLocalInertia(1.0, inertia);
-        std::vector<std::unique_ptr<btDefaultMotionState>> motions;
-        std::vector<std::unique_ptr<btRigidBody>> bodies;
-        for (const RainBox& r : rainPoses(n)) {
-            const btTransform t(btQuaternion(r.q_WB.x(), r.q_WB.y(), r.q_WB.z(), r.q_WB.w()),
-                                btVector3(r.x_W.x(), r.x_W.y(), r.x_W.z()));
-            motions.push_back(std::make_unique<btDefaultMotionState>(t));
-            btRigidBody::btRigidBodyConstructionInfo info(1.0, motions.back().get(), &boxShape, inertia);
-            bodies.push_back(std::make_unique<btRigidBody>(info));
-            bodies.back()->setFriction(friction);
-            bodies.back()->setRestitution(0.0);
-            bodies.back()->setActivationState(DISABLE_DEACTIVATION);
-            world.addRigidBody(bodies.back().get());
-        }
+        rain::BulletRain bullet(rainPoses(n));
         state.ResumeTiming();
         const double start = threadSeconds();
-        for (int k = 0; k < kSteps; ++k) world.stepSimulation(kH, 1, kH);
+        for (int k = 0; k < kSteps; ++k) bullet.step();
         const double seconds = threadSeconds() - start;
         state.PauseTiming();
-        std::vector<FinalBox> boxes;
-        for (const std::unique_ptr<btRigidBody>& b : bodies) {
-            const btTransform& t = b->getWorldTransform();
-            const btQuaternion q = t.getRotation();
-            const rbw::Quat q_WB(q.w(), q.x(), q.y(), q.z());
-            const rbw::Vec3 x_W(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
-            const btVector3& v = b->getLinearVelocity();
-            const btVector3& w = b->getAngularVelocity();
-            boxes.push_back(FinalBox{rbw::BoxPose{x_W, q_WB.toRotationMatrix(), rbw::Vec3::Constant(0.5)},
-                                     rbw::Vec3(v.x(), v.y(), v.z()), rbw::Vec3(w.x(), w.y(), w.z())});
-        }
+        const std::vector<FinalBox> boxes = bullet.boxes();
         report(state, seconds, measure(boxes));
-        for (const std::unique_ptr<btRigidBody>& b : bodies) world.removeRigidBody(b.get());
-        world.removeRigidBody(&ground);
         state.ResumeTiming();
     }
 }

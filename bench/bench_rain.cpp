@@ -23,7 +23,7 @@
 #include "physics/engine/world.h"
 
 #ifdef RBW_HAVE_BULLET
-#include <btBulletDynamicsCommon.h>
+#include "bench/rain_bullet.h"
 #endif
 
 #include <algorithm>
@@ -45,14 +45,17 @@
 namespace {
 
 using rain::FinalBox;
+using rain::ourBoxes;
 using rain::RainBox;
 
 // Our solvers: one line each. The manifold model's solver settings go into the scene
-// through `configure` (nullptr: the defaults).
+// through `configure` (nullptr: the defaults); `threads`: WorldOptions::contactThreads
+// (the soft step's islands on two threads; Bullet and Rapier's WebAssembly port run on one).
 struct OurSolver {
     const char* name;
     const char* integrator;
     void (*configure)(rbw::SceneDef&);
+    int threads = 2;
 };
 constexpr OurSolver kOurSolvers[] = {
     {"rbw sequential impulses, symplectic Euler", "symplectic-euler",
@@ -62,6 +65,8 @@ constexpr OurSolver kOurSolvers[] = {
     {"rbw soft step, symplectic Euler", "symplectic-euler",
      [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SoftStep; }},
     {"rbw soft step, explicit Euler", "explicit-euler", [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SoftStep; }},
+    {"rbw soft step, symplectic Euler, 1 thread", "symplectic-euler",
+     [](rbw::SceneDef& s) { s.solver = rbw::ManifoldSolver::SoftStep; }, 1},
 };
 
 // What one run of one engine gives: ms per step, the boxes one second before the end and
@@ -93,22 +98,13 @@ std::string loadAverage()
 
 // ---- ours
 
-std::vector<FinalBox> ourBoxes(const rbw::World& world)
-{
-    std::vector<FinalBox> boxes;
-    for (int b = 0; b < static_cast<int>(world.states().size()); ++b) {
-        const rbw::BodyState& s = world.states()[static_cast<std::size_t>(b)];
-        boxes.push_back(FinalBox{rbw::BoxPose{s.x_W, s.R_WB, rbw::Vec3::Constant(0.5)}, s.v_W, s.omega_W,
-                                 world.contactState().sleep.asleep(b)});
-    }
-    return boxes;
-}
-
 Run runOurs(const OurSolver& solver, int n)
 {
     rbw::SceneDef scene = rain::rainScene(n, rbw::ContactModel::Manifold, solver.integrator);
     if (solver.configure != nullptr) solver.configure(scene);
-    rbw::World world(std::move(scene));
+    rbw::WorldOptions options;
+    options.contactThreads = solver.threads;
+    rbw::World world(std::move(scene), options);
     Run r;
     double seconds = 0.0;
     for (int k = 1; k <= rain::kSteps; ++k) {
@@ -130,65 +126,19 @@ Run runOurs(const OurSolver& solver, int n)
 // static plane, friction sqrt(0.5) per body so the pair's product is 0.5, no sleeping)
 
 #ifdef RBW_HAVE_BULLET
-std::vector<FinalBox> bulletBoxes(const std::vector<std::unique_ptr<btRigidBody>>& bodies)
-{
-    std::vector<FinalBox> boxes;
-    for (const std::unique_ptr<btRigidBody>& b : bodies) {
-        const btTransform& t = b->getWorldTransform();
-        const btQuaternion q = t.getRotation();
-        const rbw::Quat q_WB(q.w(), q.x(), q.y(), q.z());
-        const rbw::Vec3 x_W(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
-        const btVector3& v = b->getLinearVelocity();
-        const btVector3& w = b->getAngularVelocity();
-        boxes.push_back(FinalBox{rbw::BoxPose{x_W, q_WB.toRotationMatrix(), rbw::Vec3::Constant(0.5)},
-                                 rbw::Vec3(v.x(), v.y(), v.z()), rbw::Vec3(w.x(), w.y(), w.z()),
-                                 b->getActivationState() == ISLAND_SLEEPING});
-    }
-    return boxes;
-}
-
 Run runBullet(const std::vector<RainBox>& poses)
 {
-    btDefaultCollisionConfiguration config;
-    btCollisionDispatcher dispatcher(&config);
-    btDbvtBroadphase broadphase;
-    btSequentialImpulseConstraintSolver solver;
-    btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
-    world.setGravity(btVector3(0.0, -9.81, 0.0));
-    const btScalar friction = std::sqrt(0.5);
-    btStaticPlaneShape groundShape(btVector3(0, 1, 0), 0);
-    btRigidBody ground(0.0, nullptr, &groundShape);
-    ground.setFriction(friction);
-    ground.setRestitution(0.0);
-    world.addRigidBody(&ground);
-    btBoxShape boxShape(btVector3(0.5, 0.5, 0.5));
-    btVector3 inertia(0, 0, 0);
-    boxShape.calculateLocalInertia(1.0, inertia);
-    std::vector<std::unique_ptr<btDefaultMotionState>> motions;
-    std::vector<std::unique_ptr<btRigidBody>> bodies;
-    for (const RainBox& r : poses) {
-        const btTransform t(btQuaternion(r.q_WB.x(), r.q_WB.y(), r.q_WB.z(), r.q_WB.w()),
-                            btVector3(r.x_W.x(), r.x_W.y(), r.x_W.z()));
-        motions.push_back(std::make_unique<btDefaultMotionState>(t));
-        btRigidBody::btRigidBodyConstructionInfo info(1.0, motions.back().get(), &boxShape, inertia);
-        bodies.push_back(std::make_unique<btRigidBody>(info));
-        bodies.back()->setFriction(friction);
-        bodies.back()->setRestitution(0.0);
-        bodies.back()->setActivationState(DISABLE_DEACTIVATION);
-        world.addRigidBody(bodies.back().get());
-    }
+    rain::BulletRain bullet(poses);
     Run r;
     double seconds = 0.0;
     for (int k = 1; k <= rain::kSteps; ++k) {
         const double start = wallSeconds();
-        world.stepSimulation(rain::kH, 1, rain::kH);
+        bullet.step();
         seconds += wallSeconds() - start;
-        if (k == rain::kLastSecond) r.before = bulletBoxes(bodies);
+        if (k == rain::kLastSecond) r.before = bullet.boxes();
     }
     r.msPerStep = 1000.0 * seconds / rain::kSteps;
-    r.after = bulletBoxes(bodies);
-    for (const std::unique_ptr<btRigidBody>& b : bodies) world.removeRigidBody(b.get());
-    world.removeRigidBody(&ground);
+    r.after = bullet.boxes();
     return r;
 }
 #endif

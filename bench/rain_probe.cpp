@@ -4,8 +4,9 @@
 //
 //   ./build/bench/rbw_rain_probe [--solver soft-step|sequential-impulses]
 //                                [--integrator NAME] [--boxes N] [--substeps N] [--sleep 0|1]
+//                                [--threads 1|2]
 //
-// Prints the time per step, the outcome (rain::measure, the same as rbw_bench_rain's
+// Prints the time per step (in all and in each second), the outcome (rain::measure, the same as rbw_bench_rain's
 // table), the deepest overlap every second, and the overlapping pairs at the end by
 // the kind of contact:
 //   level      the lower box's storey, round(y_lower - 0.5) for a box resting on another
@@ -28,16 +29,7 @@
 
 namespace {
 
-std::vector<rain::FinalBox> ourBoxes(const rbw::World& world)
-{
-    std::vector<rain::FinalBox> boxes;
-    for (int b = 0; b < static_cast<int>(world.states().size()); ++b) {
-        const rbw::BodyState& s = world.states()[static_cast<std::size_t>(b)];
-        boxes.push_back(rain::FinalBox{rbw::BoxPose{s.x_W, s.R_WB, rbw::Vec3::Constant(0.5)}, s.v_W, s.omega_W,
-                                       world.contactState().sleep.asleep(b)});
-    }
-    return boxes;
-}
+using rain::ourBoxes;
 
 // The angle between a box's axis nearest to world y and world y [deg]
 double tiltDegrees(const rbw::BoxPose& pose)
@@ -78,22 +70,28 @@ int main(int argc, char** argv)
     std::string solver = "soft-step";
     int substeps = 0;
     int sleep = -1;
+    int threads = 2;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (std::strcmp(argv[i], "--boxes") == 0) n = std::max(1, std::atoi(argv[i + 1]));
         if (std::strcmp(argv[i], "--integrator") == 0) integrator = argv[i + 1];
         if (std::strcmp(argv[i], "--solver") == 0) solver = argv[i + 1];
         if (std::strcmp(argv[i], "--substeps") == 0) substeps = std::max(1, std::atoi(argv[i + 1]));
         if (std::strcmp(argv[i], "--sleep") == 0) sleep = std::atoi(argv[i + 1]);
+        if (std::strcmp(argv[i], "--threads") == 0) threads = std::clamp(std::atoi(argv[i + 1]), 1, 2);
     }
     rbw::SceneDef scene = rain::rainScene(n, rbw::ContactModel::Manifold, integrator);
     scene.solver = solver == "sequential-impulses" ? rbw::ManifoldSolver::SequentialImpulses : rbw::ManifoldSolver::SoftStep;
     if (substeps > 0) scene.substeps = substeps;
     if (sleep >= 0) scene.sleep = sleep != 0;
-    rbw::World world(std::move(scene));
+    rbw::WorldOptions options;
+    options.contactThreads = threads;
+    rbw::World world(std::move(scene), options);
     std::vector<rain::FinalBox> before;
     double seconds = 0.0;
-    std::printf("%d boxes, %s, %s\ndeepest box-box overlap at the end of each second [cm]:", n, solver.c_str(),
-                integrator.c_str());
+    std::vector<double> perSecond;   // ms per step in each second of the rain
+    double secondStart = 0.0;
+    std::printf("%d boxes, %s, %s, %d thread(s)\ndeepest box-box overlap at the end of each second [cm]:", n, solver.c_str(),
+                integrator.c_str(), threads);
     for (int k = 1; k <= rain::kSteps; ++k) {
         const auto start = std::chrono::steady_clock::now();
         const rbw::StepStatus& status = world.step(nullptr);
@@ -104,11 +102,15 @@ int main(int argc, char** argv)
         }
         if (k == rain::kLastSecond) before = ourBoxes(world);
         if (k % 60 == 0) {
+            perSecond.push_back(1000.0 * (seconds - secondStart) / 60.0);
+            secondStart = seconds;
             const std::vector<Pair> pairs = overlappingPairs(ourBoxes(world));
             std::printf(" %.2f", pairs.empty() ? 0.0 : 100.0 * pairs.front().hit.depth);
             std::fflush(stdout);
         }
     }
+    std::printf("\nms per step in each second:");
+    for (const double ms : perSecond) std::printf(" %.2f", ms);
     const std::vector<rain::FinalBox> after = ourBoxes(world);
     const rain::Outcome o = rain::measure(after, before);
     std::printf("\n%.3f ms/step; KE %.3g J, > 0.01 m/s %d, > 0.1 m/s %d, asleep %d, overlap %.2f cm, below ground %.1f mm, "

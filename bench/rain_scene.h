@@ -21,6 +21,7 @@
 #include "physics/engine/collision/broad_phase.h"
 #include "physics/engine/course/box_box_sat.h"
 #include "physics/engine/scene.h"
+#include "physics/engine/world.h"
 
 #include <algorithm>
 #include <optional>
@@ -107,6 +108,18 @@ struct Outcome {
     double meanHeight = 0.0;
     double drift = 0.0;   // NaN-free: 0 when `before` is empty
 };
+
+// Our world's boxes, for measure()
+inline std::vector<FinalBox> ourBoxes(const rbw::World& world)
+{
+    std::vector<FinalBox> boxes;
+    for (int b = 0; b < static_cast<int>(world.states().size()); ++b) {
+        const rbw::BodyState& s = world.states()[static_cast<std::size_t>(b)];
+        boxes.push_back(FinalBox{rbw::BoxPose{s.x_W, s.R_WB, rbw::Vec3::Constant(0.5)}, s.v_W, s.omega_W,
+                                 world.contactState().sleep.asleep(b)});
+    }
+    return boxes;
+}
 
 // The outcome from the final boxes (and, for the drift, the boxes one second earlier;
 // empty: no drift measured), the same measure for every engine (see the top).

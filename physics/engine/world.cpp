@@ -132,6 +132,7 @@ const StepStatus& World::step(StepTrace* trace)
     if (trace != nullptr) std::fill(scratch_.loaded.begin(), scratch_.loaded.end(), 0);
     scratch_.corrections.clear();
     scratch_.contactCount = 0;
+    scratch_.contactLanes = 0;
 
     // The pipeline the scene built, in order; a check that finds a blow-up stops it.
     StepContext ctx = context(trace);

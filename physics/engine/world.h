@@ -123,6 +123,9 @@ public:
     }
     // The broad phase's counts in the last step (zero when it did not run).
     const BroadPhaseStats& lastBroadPhaseStats() const { return scratch_.broadPhase; }
+    // The lanes the soft step shared between two threads in the last step (1: one thread
+    // solved them all; 0 when it did not run).
+    int lastContactLanes() const { return scratch_.contactLanes; }
 
 private:
     StepContext context(StepTrace* trace);

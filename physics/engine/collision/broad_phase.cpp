@@ -109,18 +109,21 @@ Aabb merged(const Aabb& a, const Aabb& b)
 } // namespace
 
 void AabbTree::findPairs(const std::vector<Aabb>& boxes, const std::vector<char>& movable,
-                         std::vector<std::pair<int, int>>& pairs, BroadPhaseStats& stats, const PairLimits& limits)
+                         std::vector<std::pair<int, int>>& pairs, BroadPhaseStats& stats, const PairLimits& limits,
+                         const std::vector<char>* resting)
 {
     assert(movable.size() == boxes.size());
+    assert(resting == nullptr || resting->size() == boxes.size());
     pairs.clear();
     stats = BroadPhaseStats{};
     nodes_.clear();
     const int n = static_cast<int>(boxes.size());
     if (n < 2) return;
-    index_.resize(static_cast<std::size_t>(n));
+    index_.clear();
     centres_W_.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
-        index_[static_cast<std::size_t>(i)] = i;
+        if (resting != nullptr && (*resting)[static_cast<std::size_t>(i)]) continue;
+        index_.push_back(i);
         // the sort key of a box: its AABB's centre (min + max) / 2
         centres_W_[static_cast<std::size_t>(i)] =
             0.5 * (boxes[static_cast<std::size_t>(i)].min_W + boxes[static_cast<std::size_t>(i)].max_W);
@@ -131,9 +134,16 @@ void AabbTree::findPairs(const std::vector<Aabb>& boxes, const std::vector<char>
     stats_ = &stats;
     limits_ = limits;
     if (limits.maxPerBody > 0) pairsOf_.assign(static_cast<std::size_t>(n), 0);
-    nodes_.reserve(static_cast<std::size_t>(2 * n));
-    const int root = build(boxes, 0, n);
-    selfPairs(root);
+    const int members = static_cast<int>(index_.size());
+    if (members > 0) {
+        nodes_.reserve(static_cast<std::size_t>(2 * members));
+        const int root = build(boxes, 0, members);
+        selfPairs(root);
+        // Each resting box against the tree, in the order of the boxes
+        for (int i = 0; resting != nullptr && i < n && stats.limitHit == PairLimitHit::None; ++i) {
+            if ((*resting)[static_cast<std::size_t>(i)]) queryBox(root, i);
+        }
+    }
     std::sort(pairs.begin(), pairs.end());
     stats.pairsOverlapping = static_cast<long>(pairs.size());
 }
@@ -226,6 +236,25 @@ void AabbTree::selfPairs(int node)
     selfPairs(nd.left);
     selfPairs(nd.right);
     crossPairs(nd.left, nd.right);
+}
+
+void AabbTree::queryBox(int node, int i)
+{
+    if (stats_->limitHit != PairLimitHit::None) return;
+    const Node& nd = nodes_[static_cast<std::size_t>(node)];
+    const Aabb& box = (*boxes_)[static_cast<std::size_t>(i)];
+    if (!aabbOverlap(nd.box, box)) return;
+    if (nd.left >= 0) {
+        queryBox(nd.left, i);
+        queryBox(nd.right, i);
+        return;
+    }
+    for (int y = nd.first; y < nd.first + nd.count; ++y) {
+        const int j = index_[static_cast<std::size_t>(y)];
+        if (!(*movable_)[static_cast<std::size_t>(j)]) continue;   // resting and fixed: never woken
+        ++stats_->pairsTested;
+        if (aabbOverlap(box, (*boxes_)[static_cast<std::size_t>(j)]) && !report(i, j)) return;
+    }
 }
 
 void AabbTree::crossPairs(int a, int b)

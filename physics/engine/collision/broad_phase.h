@@ -101,11 +101,16 @@ private:
 // stats.limitHit: a pile of n coincident boxes has n (n - 1) / 2 overlapping pairs, and
 // the caps keep the work and the memory of the call linear in n (Jolt's PhysicsSystem
 // likewise takes a maximum of body pairs and reports BodyPairCacheFull beyond it).
+// With `resting` (one entry per box, non-zero for a movable box that sleeps), the tree
+// holds the other boxes only and each resting box is tested against it (Box2D v3 keeps
+// sleeping bodies out of its awake tree likewise): the pairs of two resting boxes, or of
+// a resting and a fixed box, are not looked for (a pile asleep costs no tree at all);
+// every other pair is found as without it.
 class AabbTree {
 public:
     void findPairs(const std::vector<Aabb>& boxes, const std::vector<char>& movable,
                    std::vector<std::pair<int, int>>& pairs, BroadPhaseStats& stats,
-                   const PairLimits& limits = {});
+                   const PairLimits& limits = {}, const std::vector<char>* resting = nullptr);
 
 private:
     struct Node {
@@ -119,6 +124,7 @@ private:
     void selfPairs(int node);
     void crossPairs(int a, int b);
     void testLeaves(const Node& a, const Node& b);
+    void queryBox(int node, int i);   // resting box i against the tree's movable boxes
     bool report(int i, int j);   // adds the pair; false once a cap is exceeded
 
     std::vector<Node> nodes_;

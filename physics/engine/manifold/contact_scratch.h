@@ -13,6 +13,7 @@
 #include "physics/engine/manifold/settings.h"
 #include "physics/engine/manifold/sleep.h"
 #include "physics/engine/manifold/soft_step_solver.h"
+#include "physics/engine/manifold/solver_worker.h"
 #include "physics/engine/manifold/warm_start.h"
 
 #include <utility>
@@ -30,11 +31,17 @@ struct ContactScratch {
     int iterationsUsed = 0;            // velocity iterations of the last step
     SoftStepSolver softSolver;         // the soft step's rows (solver "soft-step")
     std::vector<SubstepMotion> motion; // the soft step's per-body loads and displacement, for the position stage
+    std::vector<char> moving;          // per solver body: moved by the soft step (awake, movable)
+    int threads = 2;                   // threads the soft step may use (WorldOptions::contactThreads)
+    SolverWorker worker;               // its second thread, started when first needed
     // Broad-phase scratch
     AabbTree broadPhase;
     std::vector<Aabb> aabbs;
+    std::vector<char> resting;         // per body: asleep, kept out of the tree
     std::vector<std::pair<int, int>> pairs;
     std::vector<char> pairDone;
+    std::vector<std::pair<int, int>> pairsBefore;   // the pairs before a wake, and which were collided
+    std::vector<char> pairDoneBefore;
 };
 
 } // namespace rbw

@@ -358,10 +358,7 @@ void ContactSolver::store(std::vector<Manifold>& manifolds, std::vector<SolverBo
             mp.lambda_t2 = p.lambda_t2;
             // P = lambda_n n + lambda_t1 t1 + lambda_t2 t2 on A, -P on B; moments r x P
             const Vec3 P_W = p.lambda_n * c.n_W + p.lambda_t1 * c.t1_W + p.lambda_t2 * c.t2_W;
-            A.P_W += P_W;
-            A.Lc_W += p.r_A_W.cross(P_W);
-            B.P_W -= P_W;
-            B.Lc_W -= p.r_B_W.cross(P_W);
+            addContactImpulse(A, B, p.r_A_W, p.r_B_W, P_W);
         }
     }
 }

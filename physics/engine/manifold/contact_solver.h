@@ -54,6 +54,18 @@ struct SolverBody {
     Vec3 Lc_W = Vec3::Zero();   // sum of their moments about the centre   [kg m^2/s]
 };
 
+// The step's impulse P at a point into the bodies' sums, the contact loads: P on A at
+// r_A, -P on B at r_B, with their moments r_A x P and -r_B x P. Both solvers' store()
+// (which differ in what the step's impulse is: the sequential impulses' accumulated
+// lambda, the soft step's sum over its substeps P).
+inline void addContactImpulse(SolverBody& A, SolverBody& B, const Vec3& r_A_W, const Vec3& r_B_W, const Vec3& P_W)
+{
+    A.P_W += P_W;
+    A.Lc_W += r_A_W.cross(P_W);
+    B.P_W -= P_W;
+    B.Lc_W -= r_B_W.cross(P_W);
+}
+
 // One point's accumulated impulses after an iteration (the trace's iteration history).
 struct PointImpulses {
     double lambda_n = 0.0;

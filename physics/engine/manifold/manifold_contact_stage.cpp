@@ -9,6 +9,7 @@
 #include "physics/engine/scene_words.h"
 
 #include <algorithm>
+#include <functional>
 
 namespace rbw {
 
@@ -17,6 +18,23 @@ namespace {
 bool awakeMovable(const StepContext& ctx, int b)
 {
     return ctx.movable[static_cast<std::size_t>(b)] && !ctx.contacts.sleep.asleep(b);
+}
+
+// The soft step's points from which lanes pay for waking the second thread (the
+// rain's 1000 boxes have some 4000; a lesson's few boxes stay on one thread), and the
+// lanes then: the caller runs the first half, the worker the second (the same lanes on
+// the same core from step to step: lanes handed out to whoever is free change core and
+// were slower, 1.55 against 1.11 ms/step), and each takes over what the other has not
+// started (solver_worker.h), so a worker slowed by another process on its core holds
+// back at most one lane.
+constexpr int kPointsForTwoLanes = 256;
+constexpr int kLanes = 8;
+
+int pointCount(const std::vector<Manifold>& manifolds)
+{
+    int points = 0;
+    for (const Manifold& m : manifolds) points += m.count;
+    return points;
 }
 
 bool sleepingBody(const StepContext& ctx, int b)
@@ -79,6 +97,59 @@ bool ManifoldContactStage::collidePair(StepContext& ctx, int a, int b)
     return true;
 }
 
+bool ManifoldContactStage::findPairs(StepContext& ctx, long& tested)
+{
+    ContactScratch& w = *world_;
+    const int n = static_cast<int>(ctx.states.size());
+    BroadPhaseStats& stats = ctx.scratch.broadPhase;
+    // The caps that keep a step linear in the bodies (work_limits.h); beyond one the
+    // step stops with the limit named.
+    const int movableBodies =
+        static_cast<int>(std::count_if(ctx.movable.begin(), ctx.movable.end(), [](char m) { return m != 0; }));
+    const PairLimits limits = manifoldPairLimits(movableBodies);
+    // Sleeping bodies stay out of the tree (a pair of two is never solved): they are
+    // only tested against it, for an awake body that would wake them.
+    w.resting.resize(static_cast<std::size_t>(n));
+    bool anyResting = false;
+    for (int b = 0; b < n; ++b) {
+        const bool rests = w.settings.sleep && sleepingBody(ctx, b);
+        w.resting[static_cast<std::size_t>(b)] = rests ? 1 : 0;
+        anyResting = anyResting || rests;
+    }
+    w.broadPhase.findPairs(w.aabbs, ctx.movable, w.pairs, stats, limits, anyResting ? &w.resting : nullptr);
+    tested += stats.pairsTested;
+    w.pairDone.assign(w.pairs.size(), 0);
+    if (stats.limitHit == PairLimitHit::None) return true;
+    ctx.status = workLimitStatus(ctx.scene, ctx.k, limits, stats);
+    return false;
+}
+
+// A sleeping body touched by an awake movable one wakes with its island; repeated until
+// no more wake, since a woken body may touch another sleeping one. True if any woke.
+bool ManifoldContactStage::wakeTouched(StepContext& ctx)
+{
+    ContactScratch& w = *world_;
+    bool any = false;
+    bool woke = w.settings.sleep;
+    while (woke) {
+        woke = false;
+        for (std::size_t i = 0; i < w.pairs.size(); ++i) {
+            if (w.pairDone[i]) continue;
+            const auto [a, b] = w.pairs[i];
+            const bool wakesB = awakeMovable(ctx, a) && sleepingBody(ctx, b);
+            const bool wakesA = awakeMovable(ctx, b) && sleepingBody(ctx, a);
+            if (!wakesA && !wakesB) continue;
+            w.pairDone[i] = 1;
+            if (collidePair(ctx, a, b)) {
+                ctx.contacts.sleep.wake(wakesB ? b : a);
+                woke = true;
+                any = true;
+            }
+        }
+    }
+    return any;
+}
+
 void ManifoldContactStage::findManifolds(StepContext& ctx)
 {
     ContactScratch& w = *world_;
@@ -94,38 +165,28 @@ void ManifoldContactStage::findManifolds(StepContext& ctx)
             box.max_W += Vec3::Constant(margin);
             w.aabbs[static_cast<std::size_t>(b)] = box;
         }
-        BroadPhaseStats& stats = ctx.scratch.broadPhase;
-        // The caps that keep a step linear in the bodies (work_limits.h); beyond one the
-        // step stops with the limit named.
-        const int movableBodies = static_cast<int>(
-            std::count_if(ctx.movable.begin(), ctx.movable.end(), [](char m) { return m != 0; }));
-        const PairLimits limits = manifoldPairLimits(movableBodies);
-        w.broadPhase.findPairs(w.aabbs, ctx.movable, w.pairs, stats, limits);
-        if (stats.limitHit != PairLimitHit::None) {
-            ctx.status = workLimitStatus(ctx.scene, ctx.k, limits, stats);
-            return;
-        }
-        record(ctx.trace, q::pairs_tested, -1, double(stats.pairsTested));
-        record(ctx.trace, q::pairs_overlapping, -1, double(stats.pairsOverlapping));
-        w.pairDone.assign(w.pairs.size(), 0);
-        // A sleeping body touched by an awake movable one wakes with its island; repeat
-        // until no more wake, since a woken body may touch another sleeping one.
-        bool woke = w.settings.sleep;
-        while (woke) {
-            woke = false;
-            for (std::size_t i = 0; i < w.pairs.size(); ++i) {
-                if (w.pairDone[i]) continue;
-                const auto [a, b] = w.pairs[i];
-                const bool wakesB = awakeMovable(ctx, a) && sleepingBody(ctx, b);
-                const bool wakesA = awakeMovable(ctx, b) && sleepingBody(ctx, a);
-                if (!wakesA && !wakesB) continue;
-                w.pairDone[i] = 1;
-                if (collidePair(ctx, a, b)) {
-                    ctx.contacts.sleep.wake(wakesB ? b : a);
-                    woke = true;
+        // The pairs with a body awake at the start (sleeping ones stay out of the tree);
+        // the islands they touch wake, and if any did, the pairs again with them awake,
+        // so that a woken island's own contacts are solved in this step too.
+        long tested = 0;
+        if (!findPairs(ctx, tested)) return;
+        if (wakeTouched(ctx)) {
+            w.pairsBefore.swap(w.pairs);
+            w.pairDoneBefore.swap(w.pairDone);
+            if (!findPairs(ctx, tested)) return;
+            // A pair collided before the broad phase ran again is done: both lists are sorted
+            for (std::size_t i = 0, j = 0; i < w.pairs.size() && j < w.pairsBefore.size();) {
+                if (w.pairsBefore[j] < w.pairs[i]) {
+                    ++j;
+                } else {
+                    if (w.pairsBefore[j] == w.pairs[i]) w.pairDone[i] = w.pairDoneBefore[j];
+                    ++i;
                 }
             }
+            wakeTouched(ctx);
         }
+        record(ctx.trace, q::pairs_tested, -1, double(tested));
+        record(ctx.trace, q::pairs_overlapping, -1, double(w.pairs.size()));
         // Every other pair with an awake movable body; pairs of sleeping (or fixed)
         // bodies are left alone, their impulses kept for when they wake.
         for (std::size_t i = 0; i < w.pairs.size(); ++i) {
@@ -241,8 +302,10 @@ void ManifoldContactStage::solveSoftStep(StepContext& ctx)
     // The soft step starts from v, not from v + h F/M: each substep adds h_s F/M itself.
     // Its loads per body, a = F/M and alpha = I^-1 q (none for a body it does not move).
     w.motion.assign(static_cast<std::size_t>(n + 1), SubstepMotion{});
+    w.moving.assign(static_cast<std::size_t>(n + 1), 0);
     for (int b = 0; b < n; ++b) {
         if (!awakeMovable(ctx, b)) continue;
+        w.moving[static_cast<std::size_t>(b)] = 1;
         SolverBody& sb = w.bodies[static_cast<std::size_t>(b)];
         const BodyState& s = ctx.states[static_cast<std::size_t>(b)];
         const BodyLoad& load = ctx.loads[static_cast<std::size_t>(b)];
@@ -253,19 +316,36 @@ void ManifoldContactStage::solveSoftStep(StepContext& ctx)
         sb.omega_W = s.omega_W;
     }
     SoftStepSolver& solver = w.softSolver;
-    solver.prepare(w.manifolds, w.bodies, n, ctx.states, w.settings, h_s);
-    for (int i = 0; i < substeps; ++i) {
-        SoftStepSolver::integrateVelocities(w.bodies, w.motion, h_s);
-        solver.warmStart(w.bodies);
-        solver.solve(w.bodies, w.motion);
-        SoftStepSolver::integratePositions(w.bodies, w.motion, h_s);
-        solver.relax(w.bodies, w.motion);
-        if (ctx.trace != nullptr) solver.recordSubstep();
+    // Lanes of whole islands shared by two threads when the step is worth it (not with a
+    // trace, which records every point after each substep); the same bits either way.
+    const bool twoThreads = w.threads >= 2 && ctx.trace == nullptr && pointCount(w.manifolds) >= kPointsForTwoLanes;
+    solver.begin(w.manifolds, w.bodies, n, w.moving, w.settings, h_s, twoThreads ? kLanes : 1);
+    const double threshold = ctx.scene.restitutionThreshold;
+    int lanesWithWork = 0;
+    for (int l = 0; l < solver.laneCount(); ++l) lanesWithWork += solver.lane(l).constraints.empty() ? 0 : 1;
+    // What the integration gets: the step's impulses as loads (store(), then below); the
+    // loads it spent in the substeps are the same F and q, so v_{n+1} = v + h (F + P/h) / M.
+    if (lanesWithWork >= 2) {
+        const std::function<void(int)> lane = [&w, &solver, &ctx, substeps, h_s, threshold](int l) {
+            solver.prepare(w.manifolds, w.bodies, ctx.states, l);
+            for (int i = 0; i < substeps; ++i) solver.substep(w.bodies, w.motion, h_s, l);
+            solver.applyRestitution(w.bodies, threshold, l);
+            solver.store(w.manifolds, w.bodies, l);
+        };
+        w.worker.run(solver.laneCount(), lane);
+        ctx.scratch.contactLanes = solver.laneCount();
+    } else {
+        ctx.scratch.contactLanes = 1;
+        for (int l = 0; l < solver.laneCount(); ++l) solver.prepare(w.manifolds, w.bodies, ctx.states, l);
+        for (int i = 0; i < substeps; ++i) {
+            for (int l = 0; l < solver.laneCount(); ++l) solver.substep(w.bodies, w.motion, h_s, l);
+            if (ctx.trace != nullptr) solver.recordSubstep();
+        }
+        for (int l = 0; l < solver.laneCount(); ++l) {
+            solver.applyRestitution(w.bodies, threshold, l);
+            solver.store(w.manifolds, w.bodies, l);
+        }
     }
-    solver.applyRestitution(w.bodies, ctx.scene.restitutionThreshold);
-    // What the integration gets: the step's impulses as loads (below); the loads it
-    // spent in the substeps are the same F and q, so v_{n+1} = v + h (F + P/h) / M.
-    solver.store(w.manifolds, w.bodies);
     w.iterationsUsed = substeps;
     record(ctx.trace, q::soft_substep, -1, h_s);
     record(ctx.trace, q::soft_contact_hertz, -1, softContactHertz(w.settings.contactHertzPerSubstepRate, h_s));

@@ -27,6 +27,8 @@ public:
 private:
     void wakeLoadedBodies(StepContext& ctx);
     void findManifolds(StepContext& ctx);
+    bool findPairs(StepContext& ctx, long& tested);
+    bool wakeTouched(StepContext& ctx);
     bool collidePair(StepContext& ctx, int a, int b);
     void solve(StepContext& ctx);
     void solveSequentialImpulses(StepContext& ctx);

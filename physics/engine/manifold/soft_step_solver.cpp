@@ -56,11 +56,9 @@ double softContactHertz(double hertzPerSubstepRate, double h_s)
     return hertzPerSubstepRate / h_s;
 }
 
-void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies, int planeBody,
-                             const std::vector<BodyState>& start, const ManifoldSettings& settings, double h_s)
+void SoftStepSolver::begin(const std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies, int planeBody,
+                           const std::vector<char>& moving, const ManifoldSettings& settings, double h_s, int lanes)
 {
-    constraints_.clear();
-    points_.clear();
     history_.clear();
     h_s_ = h_s;
     maxPushOut_ = settings.maxPushOut;
@@ -68,21 +66,62 @@ void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector
     const double f = softContactHertz(settings.contactHertzPerSubstepRate, h_s);
     contact_ = makeSoft(f, settings.contactDampingRatio, h_s);
     static_ = makeSoft(2.0 * f, settings.contactDampingRatio, h_s);
-    for (Manifold& m : manifolds) {
-        const int bIndex = m.b >= 0 ? m.b : planeBody;
-        const SolverBody& A = bodies[static_cast<std::size_t>(m.a)];
-        const SolverBody& B = bodies[static_cast<std::size_t>(bIndex)];
+    // Each manifold's bodies and its points' place, in order
+    constraints_.resize(manifolds.size());
+    ends_.clear();
+    weights_.clear();
+    int first = 0;
+    for (std::size_t i = 0; i < manifolds.size(); ++i) {
+        const Manifold& m = manifolds[i];
+        Constraint& c = constraints_[i];
+        c.a = m.a;
+        c.b = m.b >= 0 ? m.b : planeBody;
+        c.first = first;
+        c.count = m.count;
+        first += m.count;
+        ends_.push_back({c.a, c.b});
+        weights_.push_back(m.count);
+    }
+    points_.resize(static_cast<std::size_t>(first));
+    splitIntoLanes(ends_, weights_, moving, lanes, lanes_, islandScratch_);
+    // Each lane's own static body (all zero, as every static solver body is)
+    const int count = static_cast<int>(bodies.size());
+    bodies.resize(static_cast<std::size_t>(count + laneCount()), SolverBody{});
+    const auto moves = [&moving](int b) { return b < static_cast<int>(moving.size()) && moving[static_cast<std::size_t>(b)]; };
+    for (int l = 0; l < laneCount(); ++l) {
+        for (const int i : lanes_[static_cast<std::size_t>(l)].constraints) {
+            Constraint& c = constraints_[static_cast<std::size_t>(i)];
+            if (!moves(c.a)) c.a = count + l;
+            if (!moves(c.b)) c.b = count + l;
+        }
+    }
+}
+
+void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies,
+                             const std::vector<BodyState>& start, int lane)
+{
+    for (const int i : lanes_[static_cast<std::size_t>(lane)].constraints) {
+        Manifold& m = manifolds[static_cast<std::size_t>(i)];
+        Constraint& c = constraints_[static_cast<std::size_t>(i)];
+        const SolverBody& A = bodies[static_cast<std::size_t>(c.a)];
+        const SolverBody& B = bodies[static_cast<std::size_t>(c.b)];
         const BodyState& startA = start[static_cast<std::size_t>(m.a)];
         const BodyState* startB = m.b >= 0 ? &start[static_cast<std::size_t>(m.b)] : nullptr;
         const Vec3 xB_W = startB != nullptr ? startB->x_W : Vec3::Zero();
         const bool movesB = B.invM > 0.0 || !B.Iinv_W.isZero(0.0);
-        constraints_.push_back(Constraint{m.n_W, m.t1_W, m.t2_W, m.mu, m.restitution, m.a, bIndex,
-                                          static_cast<int>(points_.size()), m.count, A.invM, B.invM,
-                                          movesB ? contact_ : static_});
+        c.n_W = m.n_W;
+        c.t1_W = m.t1_W;
+        c.t2_W = m.t2_W;
+        c.mu = m.mu;
+        c.restitution = m.restitution;
+        c.invM_A = A.invM;
+        c.invM_B = B.invM;
+        c.softness = movesB ? contact_ : static_;
         const double invMAB = A.invM + B.invM;
         for (int k = 0; k < m.count; ++k) {
             ManifoldPoint& mp = m.points[static_cast<std::size_t>(k)];
-            Point p{};
+            Point& p = points_[static_cast<std::size_t>(c.first + k)];
+            p = Point{};
             // r_A = p - x_A, r_B = p - x_B (fixed for the step, Box2D's anchors)
             p.r_A_W = mp.p_W - startA.x_W;
             p.r_B_W = mp.p_W - xB_W;
@@ -116,24 +155,35 @@ void SoftStepSolver::prepare(std::vector<Manifold>& manifolds, const std::vector
             mp.m_t2 = p.m_t2;
             mp.normalVelocity = p.v_n0;
             mp.v_target = 0.0;
-            points_.push_back(p);
         }
     }
 }
 
-void SoftStepSolver::integrateVelocities(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion,
-                                         double h_s)
+void SoftStepSolver::substep(std::vector<SolverBody>& bodies, std::vector<SubstepMotion>& motion, double h_s, int l)
 {
-    for (std::size_t b = 0; b < motion.size() && b < bodies.size(); ++b) {
+    const SolverLane& lane = lanes_[static_cast<std::size_t>(l)];
+    integrateVelocities(bodies, motion, h_s, lane);
+    warmStart(bodies, lane);
+    solve(bodies, motion, lane);
+    integratePositions(bodies, motion, h_s, lane);
+    relax(bodies, motion, lane);
+}
+
+void SoftStepSolver::integrateVelocities(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion,
+                                         double h_s, const SolverLane& lane)
+{
+    for (const int i : lane.bodies) {
+        const std::size_t b = static_cast<std::size_t>(i);
         // v += h_s F / M, omega += h_s I^-1 q
         bodies[b].v_W += h_s * motion[b].a_W;
         bodies[b].omega_W += h_s * motion[b].alpha_W;
     }
 }
 
-void SoftStepSolver::warmStart(std::vector<SolverBody>& bodies)
+void SoftStepSolver::warmStart(std::vector<SolverBody>& bodies, const SolverLane& lane)
 {
-    for (const Constraint& c : constraints_) {
+    for (const int i : lane.constraints) {
+        const Constraint& c = constraints_[static_cast<std::size_t>(i)];
         SolverBody& A = bodies[static_cast<std::size_t>(c.a)];
         SolverBody& B = bodies[static_cast<std::size_t>(c.b)];
         for (int k = 0; k < c.count; ++k) {
@@ -152,22 +202,28 @@ void SoftStepSolver::warmStart(std::vector<SolverBody>& bodies)
     }
 }
 
-void SoftStepSolver::solveRows(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, bool useBias)
+void SoftStepSolver::solveRows(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, bool useBias,
+                               const SolverLane& lane)
 {
     const double inv_h = 1.0 / h_s_;
     const SubstepMotion still;   // a plane, a fixed or a sleeping body: never moved
-    for (const Constraint& c : constraints_) {
+    for (const int i : lane.constraints) {
+        const Constraint& c = constraints_[static_cast<std::size_t>(i)];
         SolverBody& A = bodies[static_cast<std::size_t>(c.a)];
         SolverBody& B = bodies[static_cast<std::size_t>(c.b)];
         const SubstepMotion& mA = c.a < static_cast<int>(motion.size()) ? motion[static_cast<std::size_t>(c.a)] : still;
         const SubstepMotion& mB = c.b < static_cast<int>(motion.size()) ? motion[static_cast<std::size_t>(c.b)] : still;
         // dx_A - dx_B, the bodies' relative displacement since prepare()
-        const Vec3 dx_W = mA.dx_W - mB.dx_W;
+        // s = s_base + n . (dx_A - dx_B + dq_A r_A - dq_B r_B)
+        //   = s_base + n . (dx_A - dx_B) + (dq_A^-1 n) . r_A - (dq_B^-1 n) . r_B
+        // (a rotation keeps dot products): the normal turned back once per manifold,
+        // not each lever arm turned forward at every point
+        const double ndx = c.n_W.dot(mA.dx_W - mB.dx_W);
+        const Vec3 nA_W = mA.dq_WB.conjugate() * c.n_W;
+        const Vec3 nB_W = mB.dq_WB.conjugate() * c.n_W;
         for (int k = 0; k < c.count; ++k) {
             Point& p = points_[static_cast<std::size_t>(c.first + k)];
-            // s = s_base + n . (dx_A - dx_B + dq_A r_A - dq_B r_B)
-            const Vec3 ds_W = dx_W + (mA.dq_WB * p.r_A_W - mB.dq_WB * p.r_B_W);
-            const double s = p.s_base + c.n_W.dot(ds_W);
+            const double s = p.s_base + (ndx + (nA_W.dot(p.r_A_W) - nB_W.dot(p.r_B_W)));
             double bias = 0.0;
             double massScale = 1.0;
             double impulseScale = 0.0;
@@ -230,9 +286,10 @@ void SoftStepSolver::solveRows(std::vector<SolverBody>& bodies, const std::vecto
 }
 
 void SoftStepSolver::integratePositions(const std::vector<SolverBody>& bodies, std::vector<SubstepMotion>& motion,
-                                        double h_s)
+                                        double h_s, const SolverLane& lane)
 {
-    for (std::size_t b = 0; b < motion.size() && b < bodies.size(); ++b) {
+    for (const int i : lane.bodies) {
+        const std::size_t b = static_cast<std::size_t>(i);
         SubstepMotion& m = motion[b];
         // dx += h_s v, dtheta += h_s omega
         m.dx_W += h_s * bodies[b].v_W;
@@ -245,9 +302,10 @@ void SoftStepSolver::integratePositions(const std::vector<SolverBody>& bodies, s
     }
 }
 
-void SoftStepSolver::applyRestitution(std::vector<SolverBody>& bodies, double threshold)
+void SoftStepSolver::applyRestitution(std::vector<SolverBody>& bodies, double threshold, int lane)
 {
-    for (const Constraint& c : constraints_) {
+    for (const int i : lanes_[static_cast<std::size_t>(lane)].constraints) {
+        const Constraint& c = constraints_[static_cast<std::size_t>(i)];
         if (c.restitution == 0.0) continue;
         SolverBody& A = bodies[static_cast<std::size_t>(c.a)];
         SolverBody& B = bodies[static_cast<std::size_t>(c.b)];
@@ -272,9 +330,10 @@ void SoftStepSolver::recordSubstep()
     for (const Point& p : points_) history_.push_back(PointImpulses{p.lambda_n, p.lambda_t1, p.lambda_t2});
 }
 
-void SoftStepSolver::store(std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies) const
+void SoftStepSolver::store(std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies, int lane) const
 {
-    for (std::size_t i = 0; i < constraints_.size() && i < manifolds.size(); ++i) {
+    for (const int index : lanes_[static_cast<std::size_t>(lane)].constraints) {
+        const std::size_t i = static_cast<std::size_t>(index);
         const Constraint& c = constraints_[i];
         SolverBody& A = bodies[static_cast<std::size_t>(c.a)];
         SolverBody& B = bodies[static_cast<std::size_t>(c.b)];
@@ -288,10 +347,7 @@ void SoftStepSolver::store(std::vector<Manifold>& manifolds, std::vector<SolverB
             // The step's impulse P = P_n n + P_t1 t1 + P_t2 t2 on A, -P on B; moments r x P
             const Vec3 P_W = p.P_n * c.n_W + p.P_t1 * c.t1_W + p.P_t2 * c.t2_W;
             mp.P_t_W = p.P_t1 * c.t1_W + p.P_t2 * c.t2_W;
-            A.P_W += P_W;
-            A.Lc_W += p.r_A_W.cross(P_W);
-            B.P_W -= P_W;
-            B.Lc_W -= p.r_B_W.cross(P_W);
+            addContactImpulse(A, B, p.r_A_W, p.r_B_W, P_W);
         }
     }
 }

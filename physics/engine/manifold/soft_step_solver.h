@@ -3,9 +3,11 @@
 // this file; docs/collisions.md, "The soft step"). One step of length h is cut into
 // n substeps of h_s = h / n (substeps, default 5); per step and per substep:
 //
-//   prepare()                     once: anchors, base separations, effective masses,
-//                                 softness, start normal velocities, warm-start impulses
-//   for each substep:
+//   begin()                       once: the softness, the lanes of whole islands, one per
+//                                 thread (solver_islands.h); then each lane on its own:
+//   prepare()                     anchors, base separations, effective masses,
+//                                 start normal velocities, warm-start impulses
+//   for each substep (substep()):
 //     integrateVelocities()       v += h_s F / M,  omega += h_s I^-1 q
 //     warmStart()                 the accumulated impulses applied again
 //     solve()                     soft normal rows with a push-out bias (useBias = true)
@@ -52,6 +54,7 @@
 #include "physics/engine/manifold/contact_solver.h"
 #include "physics/engine/manifold/manifold.h"
 #include "physics/engine/manifold/settings.h"
+#include "physics/engine/manifold/solver_islands.h"
 
 #include <vector>
 
@@ -89,33 +92,53 @@ public:
         "one substep of the soft step: the velocities take h_s F/M, the warm start, one solve "
         "with soft contacts over every manifold, the positions move, one relax pass without the bias";
 
-    // For every manifold (A = bodies[m.a]; B = bodies[m.b], or bodies[planeBody] for a
-    // plane): lever arms, s_base, m_n, m_t1, m_t2, v_n0, the softness (static when B
-    // cannot move), the warm-start impulses from the cache (lambda_n, warm_t_W). Writes
-    // r_A, r_B, m_n, m_t1, m_t2, normalVelocity into the manifolds' points.
-    void prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies, int planeBody,
-                 const std::vector<BodyState>& start, const ManifoldSettings& settings, double h_s);
+    // Once per step, before the lanes run: the softness, each manifold's bodies (A =
+    // m.a; B = m.b, or planeBody for a plane) and its points' place, and the lanes:
+    // the manifolds split into `lanes` lanes of whole islands that share no moving body
+    // (solver_islands.h), each with its own static body: a manifold's fixed, sleeping or
+    // plane side becomes bodies[count + lane] (appended; zero velocity, mass and inertia,
+    // as the body it stands for), so that no two lanes write to one body. With one lane:
+    // every manifold in order, every moving body.
+    void begin(const std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies, int planeBody,
+               const std::vector<char>& moving, const ManifoldSettings& settings, double h_s, int lanes);
+    // For the lane's manifolds: lever arms, s_base, m_n, m_t1, m_t2, v_n0, the softness
+    // (static when B cannot move), the warm-start impulses from the cache (lambda_n,
+    // warm_t_W). Writes r_A, r_B, m_n, m_t1, m_t2, normalVelocity into the manifolds' points.
+    void prepare(std::vector<Manifold>& manifolds, const std::vector<SolverBody>& bodies,
+                 const std::vector<BodyState>& start, int lane);
+    int laneCount() const { return static_cast<int>(lanes_.size()); }
+    const SolverLane& lane(int l) const { return lanes_[static_cast<std::size_t>(l)]; }
 
-    // v += h_s F / M, omega += h_s I^-1 q for every body with motion (the plane's has none).
+    // One substep of one lane: integrateVelocities, warmStart, solve, integratePositions, relax.
+    void substep(std::vector<SolverBody>& bodies, std::vector<SubstepMotion>& motion, double h_s, int lane);
+
+    // v += h_s F / M, omega += h_s I^-1 q for the lane's bodies.
     static void integrateVelocities(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion,
-                                    double h_s);
+                                    double h_s, const SolverLane& lane);
     // Applies the accumulated impulses to the bodies (and counts them into the step's P).
-    void warmStart(std::vector<SolverBody>& bodies);
+    void warmStart(std::vector<SolverBody>& bodies, const SolverLane& lane);
     // The soft rows with the push-out bias.
-    void solve(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion) { solveRows(bodies, motion, true); }
+    void solve(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, const SolverLane& lane)
+    {
+        solveRows(bodies, motion, true, lane);
+    }
     // dx += h_s v, dtheta += h_s omega, dq <- normalise(dq + h_s/2 (0, omega) dq).
-    static void integratePositions(const std::vector<SolverBody>& bodies, std::vector<SubstepMotion>& motion, double h_s);
+    static void integratePositions(const std::vector<SolverBody>& bodies, std::vector<SubstepMotion>& motion,
+                                   double h_s, const SolverLane& lane);
     // The rigid rows without the bias: takes back the push-out velocity.
-    void relax(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion) { solveRows(bodies, motion, false); }
+    void relax(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, const SolverLane& lane)
+    {
+        solveRows(bodies, motion, false, lane);
+    }
     // After the substeps: the bounce v_n -> -e v_n0 at points approaching faster than
     // `threshold` at the start that got an impulse.
-    void applyRestitution(std::vector<SolverBody>& bodies, double threshold);
+    void applyRestitution(std::vector<SolverBody>& bodies, double threshold, int lane);
     // Appends every point's accumulated impulses to history() (after a substep).
     void recordSubstep();
     // lambda_n, lambda_t1, lambda_t2 (the last substep's, what the next step warm-starts
     // from) into the manifolds' points, the step's impulses P_n, P_t into stepImpulse_*,
     // and the step's sums P, L_c into the bodies (the contact loads).
-    void store(std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies) const;
+    void store(std::vector<Manifold>& manifolds, std::vector<SolverBody>& bodies, int lane) const;
 
     // Points of all manifolds, in order; history()[i * pointCount() + g]: point g after substep i+1.
     int pointCount() const { return static_cast<int>(points_.size()); }
@@ -124,7 +147,8 @@ public:
     const Softness& staticSoftness() const { return static_; }
 
 private:
-    void solveRows(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, bool useBias);
+    void solveRows(std::vector<SolverBody>& bodies, const std::vector<SubstepMotion>& motion, bool useBias,
+                   const SolverLane& lane);
 
     struct Point {
         Vec3 r_A_W, r_B_W;
@@ -142,7 +166,7 @@ private:
     struct Constraint {
         Vec3 n_W, t1_W, t2_W;
         double mu, restitution;
-        int a, b;
+        int a, b;   // solver bodies; a static side may be its lane's (splitLanes)
         int first, count;
         double invM_A, invM_B;   // [1/kg]
         Softness softness;
@@ -150,6 +174,10 @@ private:
     std::vector<Constraint> constraints_;
     std::vector<Point> points_;
     std::vector<PointImpulses> history_;
+    std::vector<SolverLane> lanes_;
+    IslandScratch islandScratch_;
+    std::vector<std::array<int, 2>> ends_;   // splitLanes' input: each constraint's bodies
+    std::vector<int> weights_;               // and points
     Softness contact_;
     Softness static_;
     double h_s_ = 0.0;

@@ -120,6 +120,7 @@ std::vector<PipelineEntry> buildPipeline(const SceneDef& scene, const std::vecto
     if (manifold) {
         contactScratch = std::make_shared<ContactScratch>();
         contactScratch->settings = manifoldSettings(scene);
+        contactScratch->threads = options.contactThreads;
     }
 
     std::vector<PipelineEntry> out;

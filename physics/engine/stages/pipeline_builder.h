@@ -18,6 +18,10 @@ struct WorldOptions {
     // the minimal pipeline saves; results equal the minimal pipeline's as long as no
     // two bodies touch when box_collisions is off.
     bool allStages = false;
+    // Threads the manifold model's soft step may use (1 or 2): with 2, a step with
+    // enough contacts solves its islands in lanes shared by two threads
+    // (manifold/solver_islands.h). The results are the same bits for 1 and 2.
+    int contactThreads = 2;
 };
 
 // One entry of the pipeline: the stage object that runs, and its description, read

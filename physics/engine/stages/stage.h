@@ -61,6 +61,7 @@ struct StepScratch {
     std::vector<PendingCorrection> corrections;   // contacts -> correction
     int contactCount = 0;                // contacts resolved so far in this step
     BroadPhaseStats broadPhase;          // box_box: counts of the last step
+    int contactLanes = 0;                // the soft step's lanes shared by two threads, or 1 (solver_islands.h)
 };
 
 // Everything a stage reads and writes in one step. The world owns all of it.
