@@ -188,8 +188,12 @@ ShellActions::ShellActions(MainWindow* window, ExerciseActions* exercise)
         if (dialog == nullptr) {
             dialog = new SimulatorDialog(w);
             // Open in the main window: the probe as the scene, the student's numbers in the table.
+            // The dialog steps aside (it stays on top of its window otherwise); Tools → Compare
+            // brings it back with its inputs and result.
             connect(dialog, &SimulatorDialog::openInMainWindowRequested, w, [w, dialog](int probe) {
-                if (w->probeInWindow()->open(dialog->outcome().run, dialog->outcome().right, probe)) w->activateWindow();
+                if (!w->probeInWindow()->open(dialog->outcome().run, dialog->outcome().right, probe)) return;
+                dialog->hide();
+                w->activateWindow();
             });
         }
         dialog->show();

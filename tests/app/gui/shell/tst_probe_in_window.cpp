@@ -154,8 +154,11 @@ void TestProbeInWindow::yoursColumnAndMark()
     QVERIFY(open->isEnabled());
 
     dialog->resultView()->selectProbe(probe);
+    QVERIFY(dialog->isVisible());
     open->click();
     QVERIFY(w.probeInWindow()->isOpen());
+    // The dialog steps aside: it would otherwise stay on top of the window it opened the probe in.
+    QVERIFY(!dialog->isVisible());
     QCOMPARE(w.probeInWindow()->probeName(), QString::fromStdString(run.probes[size_t(probe)].name));
     const TraceModel* model = w.traceModel();
     QVERIFY(!view->isColumnHidden(TraceModel::YoursColumn));
