@@ -42,50 +42,6 @@ std::vector<double> slice(const Answer& a, const Block& b)
 
 } // namespace
 
-std::optional<Divergence> firstDivergence(const Probe& probe, const Answers& expected, const Answers& given,
-                                          double margin)
-{
-    const std::vector<double> s = scales(expected);
-    const std::vector<AnswerSlot> slots = answerSlots(probe);
-    const std::size_t n = std::min({expected.size(), given.size(), slots.size()});
-    for (std::size_t k = 0; k < n; ++k) {
-        const Answer& e = expected[k];
-        const Answer& g = given[k];
-        for (int bi = 0; bi < 4; ++bi) {
-            const Block& b = kBlocks[bi];
-            if (static_cast<int>(e.size()) < b.first + b.size || static_cast<int>(g.size()) < b.first + b.size) continue;
-            const double tol = margin * kRelativeTolerance * s[bi];
-            // r and -r are the same orientation: compare with the sign that fits better
-            double sign = 1.0;
-            if (bi == 3) {
-                double plus = 0.0, minus = 0.0;
-                for (int i = b.first; i < b.first + b.size; ++i) {
-                    plus = std::max(plus, std::abs(g[i] - e[i]));
-                    minus = std::max(minus, std::abs(g[i] + e[i]));
-                }
-                if (minus < plus) sign = -1.0;
-            }
-            for (int i = b.first; i < b.first + b.size; ++i) {
-                if (std::abs(g[i] - sign * e[i]) <= tol) continue;   // false for nan: a divergence
-                Divergence d;
-                d.answer = static_cast<int>(k);
-                d.step = slots[k].step;
-                d.body = slots[k].body;
-                d.quantity = b.name;
-                d.component = i - b.first;
-                d.expected = slice(e, b);
-                if (sign < 0.0) {
-                    for (double& v : d.expected) v = -v;
-                }
-                d.given = slice(g, b);
-                d.tolerance = tol;
-                return d;
-            }
-        }
-    }
-    return std::nullopt;
-}
-
 std::vector<QuantityDifference> answerDifferences(const Probe& probe, const Answers& expected, const Answers& given,
                                                   double margin)
 {
@@ -127,6 +83,29 @@ std::vector<QuantityDifference> answerDifferences(const Probe& probe, const Answ
         }
     }
     return out;
+}
+
+std::optional<Divergence> firstDivergence(const Probe& probe, const Answers& expected, const Answers& given,
+                                          double margin)
+{
+    for (const QuantityDifference& q : answerDifferences(probe, expected, given, margin)) {
+        if (!q.differs) continue;
+        Divergence d;
+        d.answer = q.answer;
+        d.step = q.step;
+        d.body = q.body;
+        d.quantity = q.quantity;
+        d.expected = q.expected;
+        d.given = q.given;
+        d.tolerance = q.tolerance;
+        // the first component out of tolerance (false for nan: a divergence)
+        while (d.component + 1 < static_cast<int>(q.given.size())
+               && std::abs(q.given[d.component] - q.expected[d.component]) <= q.tolerance) {
+            ++d.component;
+        }
+        return d;
+    }
+    return std::nullopt;
 }
 
 const char* verdictName(Verdict v)

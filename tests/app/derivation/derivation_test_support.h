@@ -5,6 +5,8 @@
 #include "app/scene/scene_loader.h"
 #include "physics/engine/world.h"
 
+#include <QDir>
+#include <QFileInfo>
 #include <QRegularExpression>
 #include <QString>
 #include <QStringList>
@@ -23,6 +25,23 @@ inline SceneDef lessonScene(const QString& id)
     const SceneLoadResult r = loadSceneFile(lessonDir(id) + QStringLiteral("/scene.json"));
     if (!r.ok()) qFatal("%s", qPrintable(r.errors.join('\n')));
     return *r.scene;
+}
+
+// Every scene of every lesson folder that has a derivation template: the lesson's own
+// scene.json and its variants (the folder's other scene files, which share the
+// template), as "folder/file.json".
+inline QStringList lessonScenesWithTemplates()
+{
+    QStringList out;
+    const QDir dir(QStringLiteral(RBW_SOURCE_DIR "/lessons"));
+    for (const QString& d : dir.entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name)) {
+        if (!QFileInfo::exists(dir.filePath(d + QStringLiteral("/derivation.md")))) continue;
+        const QDir lesson(dir.filePath(d));
+        for (const QString& f : lesson.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+            if (f != QLatin1String("exercise.json")) out << d + '/' + f;
+        }
+    }
+    return out;
 }
 
 // The trace of step k (steps 0..k are taken).

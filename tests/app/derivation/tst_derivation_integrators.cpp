@@ -48,23 +48,6 @@ SceneDef withIntegrator(SceneDef scene, const char* name)
     return scene;
 }
 
-// Every scene of every lesson folder that has a derivation template: the lesson's own
-// scene.json and its variants (the folder's other scene files, which share the
-// template), as "folder/file.json".
-QStringList lessonScenesWithTemplates()
-{
-    QStringList out;
-    const QDir dir(QStringLiteral(RBW_SOURCE_DIR "/lessons"));
-    for (const QString& d : dir.entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name)) {
-        if (!QFileInfo::exists(dir.filePath(d + QStringLiteral("/derivation.md")))) continue;
-        const QDir lesson(dir.filePath(d));
-        for (const QString& f : lesson.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
-            if (f != QLatin1String("exercise.json")) out << d + '/' + f;
-        }
-    }
-    return out;
-}
-
 SceneDef sceneOf(const QString& lessonScene)
 {
     const SceneLoadResult r = loadSceneFile(QStringLiteral(RBW_SOURCE_DIR "/lessons/") + lessonScene);

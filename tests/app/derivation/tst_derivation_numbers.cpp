@@ -125,21 +125,6 @@ QString unnumbered(const DerivationRow& row)
 
 namespace {
 
-// Every lesson scene: "folder/file.json" of every lesson folder with a template.
-QStringList lessonScenes()
-{
-    QStringList out;
-    const QDir dir(QStringLiteral(RBW_SOURCE_DIR "/lessons"));
-    for (const QString& d : dir.entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name)) {
-        if (!QFileInfo::exists(dir.filePath(d + QStringLiteral("/derivation.md")))) continue;
-        const QDir lesson(dir.filePath(d));
-        for (const QString& f : lesson.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
-            if (f != QLatin1String("exercise.json")) out << d + '/' + f;
-        }
-    }
-    return out;
-}
-
 // The steps to look at: every 10th of the first 400 (resting, sliding, asleep), the
 // first contact and five steps later (warm start).
 std::vector<StepTrace> tracesToCheck(const SceneDef& scene)
@@ -229,7 +214,7 @@ void TestDerivationNumbers::everyLineHasNumbers_data()
 {
     QTest::addColumn<QString>("lesson");
     QTest::addColumn<QString>("integrator");   // empty: as written
-    for (const QString& lesson : lessonScenes()) QTest::newRow(qPrintable(lesson)) << lesson << QString();
+    for (const QString& lesson : lessonScenesWithTemplates()) QTest::newRow(qPrintable(lesson)) << lesson << QString();
     // A student may switch the integrator: every integrator's section, on a lesson with
     // a force and a probe (1), a free spinning body (9) and contacts (3).
     for (const char* lesson : {"01-one-step/scene.json", "03-two-box-collision/scene.json", "09-tennis-racket/scene.json"}) {
